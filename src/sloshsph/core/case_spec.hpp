@@ -1,0 +1,120 @@
+#pragma once
+// The plain, validated description of one simulation, in SI units.
+// io/case_reader fills it from a TOML case file; every later layer reads only this.
+// docs/case-format.md documents each field under its TOML key.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sloshsph/core/vec2.hpp"
+
+namespace sloshsph {
+
+struct FluidSpec {
+  double density = 1000.0;    // kg/m^3
+  double viscosity = 1.0e-6;  // m^2/s, kinematic
+  double gravity = 9.81;      // m/s^2
+};
+
+struct TankSpec {
+  std::string shape = "rectangle";
+  double length = 0.0;  // m, inner length
+  double height = 0.0;  // m, wall height above the lowest point of the bottom
+};
+
+struct FillSpec {
+  double depth = 0.0;  // m, still-water depth above the lowest point of the bottom
+};
+
+enum class KernelType { wendland_c2, cubic_spline };
+
+struct ParticleSpec {
+  double dp = 0.0;             // m, initial particle spacing
+  double kernel_ratio = 1.4;   // h / dp
+  int wall_layers = 2;         // layers of dummy wall particles
+  KernelType kernel = KernelType::wendland_c2;
+};
+
+enum class PressureSolve { explicit_update, implicit_krylov };
+
+struct SchemeSpec {
+  std::string type = "isph";
+  double alpha = 0.01;                   // PPE blending factor (thesis eq. 2.13)
+  PressureSolve pressure = PressureSolve::explicit_update;
+  double free_surface_threshold = 0.9;   // rho_n / rho_0 below which p = 0 (thesis eq. 2.20)
+  bool turbulence = true;                // SPS (thesis eqs. 2.8, 2.9, 2.17)
+  double smagorinsky = 0.1;              // Cs
+  double ct = 0.08;                      // Ct, for k_t
+  double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual
+  int solver_max_iterations = 1000;      // implicit PPE
+  double neighbour_skin = 0.2;           // Verlet skin as a fraction of the support radius 2h
+};
+
+struct TimeSpec {
+  double end = 0.0;          // s
+  double dt = 5.0e-4;        // s, fixed step (or the ceiling of an adaptive step)
+  bool adaptive = false;     // CFL-adaptive step, thesis 2.6.3.2
+  double cfl = 0.1;          // factor of dt <= cfl * min(dp / u_max, dp^2 / nu)
+};
+
+enum class ExcitationType { none, harmonic };
+
+struct ExcitationSpec {
+  ExcitationType type = ExcitationType::none;
+  double amplitude = 0.0;            // m
+  std::optional<double> frequency;   // Hz, as given
+  std::optional<double> beta;        // ratio to the tank's first linear sloshing frequency
+  double omega = 0.0;                // rad/s, resolved (from frequency or beta)
+  double ramp = 0.0;                 // s, smooth ramp-up time
+  double phase = 0.0;                // rad, X(t) = A sin(omega t + phase)
+  double stop = -1.0;                // s, motion stops after this time (< 0: never)
+};
+
+struct GaugeSpec {
+  std::string name;
+  double x = 0.0;  // m from the left wall
+};
+
+struct PressureProbeSpec {
+  std::string name;
+  Vec2 position;   // m: x from the left wall, y above the lowest point of the bottom
+};
+
+struct OutputSpec {
+  double sample_interval = 0.01;    // s, time series
+  double snapshot_interval = 0.5;   // s, VTK particle snapshots (<= 0: none)
+  bool snapshot_walls = true;       // include wall particles in snapshots
+};
+
+struct RunSpec {
+  double max_leaked_fraction = 0.01;  // of the initial fluid particles, before the run fails
+  double max_speed_factor = 20.0;     // fail if any speed exceeds this times sqrt(g * depth)
+};
+
+struct CaseSpec {
+  std::string source;  // file the case came from ("<built-in>" for the default case)
+  std::string name;    // stem of the file, names the default output directory
+  std::string title;   // free text
+  FluidSpec fluid;
+  TankSpec tank;
+  FillSpec fill;
+  ParticleSpec particles;
+  SchemeSpec scheme;
+  TimeSpec time;
+  ExcitationSpec excitation;
+  std::vector<GaugeSpec> gauges;
+  std::vector<PressureProbeSpec> pressure_probes;
+  OutputSpec output;
+  RunSpec run;
+
+  // Where each key was given: dotted key -> "file:line" or "--set key".
+  std::map<std::string, std::string> locations;
+  // Location of `key` for messages about it, or the case file when it was not given.
+  std::string where(const std::string& key) const {
+    auto it = locations.find(key);
+    return it != locations.end() ? it->second : source;
+  }
+};
+
+}  // namespace sloshsph

@@ -1,0 +1,50 @@
+#include "sloshsph/core/particles.hpp"
+
+namespace sloshsph {
+namespace {
+
+template <class T>
+void permute_prefix(std::vector<T>& v, const std::vector<std::uint32_t>& order, std::vector<T>& scratch) {
+  scratch.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) scratch[k] = v[order[k]];
+  std::copy(scratch.begin(), scratch.end(), v.begin());
+}
+
+template <class T>
+void compact_prefix(std::vector<T>& v, std::size_t n_prefix, const std::vector<std::uint8_t>& remove) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i < n_prefix && remove[i]) continue;
+    v[out++] = v[i];
+  }
+  v.resize(out);
+}
+
+}  // namespace
+
+void Particles::permute_fluid(const std::vector<std::uint32_t>& order) {
+  std::vector<Vec2> s2;
+  std::vector<double> s1;
+  std::vector<std::int32_t> si;
+  permute_prefix(position, order, s2);
+  permute_prefix(velocity, order, s2);
+  permute_prefix(normal, order, s2);
+  permute_prefix(pressure, order, s1);
+  permute_prefix(density, order, s1);
+  permute_prefix(id, order, si);
+}
+
+void Particles::remove_fluid(const std::vector<std::uint8_t>& remove) {
+  const std::size_t n = n_fluid;
+  compact_prefix(position, n, remove);
+  compact_prefix(velocity, n, remove);
+  compact_prefix(normal, n, remove);
+  compact_prefix(pressure, n, remove);
+  compact_prefix(density, n, remove);
+  compact_prefix(id, n, remove);
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < n; ++i) removed += remove[i] ? 1 : 0;
+  n_fluid -= removed;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,77 @@
+#include "sloshsph/geometry/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sloshsph/core/errors.hpp"
+
+namespace sloshsph {
+namespace {
+
+void check_probes(const CaseSpec& spec, const TankGeometry& tank) {
+  for (std::size_t k = 0; k < spec.gauges.size(); ++k) {
+    const std::string key = "probes.gauge." + std::to_string(k) + ".x";
+    const double x = spec.gauges[k].x;
+    if (x <= tank.x_min || x >= tank.x_max) {
+      std::ostringstream m;
+      m << "gauge '" << spec.gauges[k].name << "' at x = " << x << " m is outside the tank (" << tank.x_min << " < x < "
+        << tank.x_max << ")";
+      throw InputError(spec.where(key), key, m.str());
+    }
+  }
+  for (std::size_t k = 0; k < spec.pressure_probes.size(); ++k) {
+    const std::string key = "probes.pressure." + std::to_string(k) + ".x";
+    const Vec2 p = spec.pressure_probes[k].position;
+    // A probe may sit on the wall surface or in the first wall layer (thesis 5.5.1), not beyond.
+    if (tank.signed_distance(p) < -spec.particles.dp || p.y > tank.y_top) {
+      std::ostringstream m;
+      m << "pressure probe '" << spec.pressure_probes[k].name << "' at (" << p.x << ", " << p.y
+        << ") m is outside the tank";
+      throw InputError(spec.where(key), key, m.str());
+    }
+  }
+}
+
+}  // namespace
+
+Scene build_scene(const CaseSpec& spec) {
+  auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));
+  check_probes(spec, *tank);
+
+  Scene scene;
+  scene.tank = tank;
+  scene.dp = spec.particles.dp;
+  scene.h = spec.particles.kernel_ratio * spec.particles.dp;
+  scene.still_level = tank->y_bottom + spec.fill.depth;
+
+  const std::vector<Vec2> fluid = fill_fluid(*tank, scene.dp, spec.fill.depth);
+  if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
+  const std::vector<WallSample> walls = sample_walls(*tank, scene.dp, spec.particles.wall_layers);
+
+  Particles& p = scene.particles;
+  p.resize(fluid.size() + walls.size());
+  p.n_fluid = fluid.size();
+  p.volume = scene.dp * scene.dp;
+  p.mass = spec.fluid.density * p.volume;
+  const double rho_g = spec.fluid.density * spec.fluid.gravity;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    p.position[i] = fluid[i];
+    p.pressure[i] = rho_g * (scene.still_level - fluid[i].y);
+  }
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const std::size_t i = fluid.size() + k;
+    p.position[i] = walls[k].position;
+    p.normal[i] = walls[k].normal;
+    p.pressure[i] = rho_g * std::max(0.0, scene.still_level - walls[k].position.y);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.id[i] = static_cast<std::int32_t>(i);
+    p.density[i] = spec.fluid.density;
+  }
+  scene.initial_fluid_count = p.n_fluid;
+  scene.initial_fluid_mass = p.mass * static_cast<double>(p.n_fluid);
+  return scene;
+}
+
+}  // namespace sloshsph

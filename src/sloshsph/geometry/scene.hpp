@@ -1,0 +1,26 @@
+#pragma once
+// The initial particle set of a case: fluid filled into the tank section, dummy wall
+// particles along its walls, hydrostatic pressure. Built before any output exists,
+// so a bad geometry fails without leaving a half-written run directory.
+#include <memory>
+
+#include "sloshsph/core/case_spec.hpp"
+#include "sloshsph/core/particles.hpp"
+#include "sloshsph/geometry/tank.hpp"
+
+namespace sloshsph {
+
+struct Scene {
+  std::shared_ptr<const TankGeometry> tank;  // shared: ContainerDistance points into it
+  Particles particles;
+  double dp = 0.0;
+  double h = 0.0;              // kernel smoothing length, kernel_ratio * dp
+  double still_level = 0.0;    // y of the still free surface
+  double initial_fluid_mass = 0.0;  // kg per metre of width
+  std::size_t initial_fluid_count = 0;
+};
+
+// Throws InputError (naming the key) when the geometry cannot hold the case.
+Scene build_scene(const CaseSpec& spec);
+
+}  // namespace sloshsph

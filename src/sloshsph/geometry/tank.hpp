@@ -1,0 +1,72 @@
+#pragma once
+// Tank sections as wall curves, and the particles that discretise them.
+// The wall is an open polyline (the wall surface) running from the top of the
+// left wall, down through the bottom, to the top of the right wall. The fluid
+// lies on its left-hand side, so the inward normal of a segment with direction
+// t is perp(t).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sloshsph/core/case_spec.hpp"
+#include "sloshsph/core/vec2.hpp"
+
+namespace sloshsph {
+
+struct TankGeometry {
+  std::vector<Vec2> wall;  // wall surface, top-left -> bottom -> top-right
+  double x_min = 0.0, x_max = 0.0;  // horizontal extent of the section
+  double y_bottom = 0.0;            // lowest point of the wall
+  double y_top = 0.0;               // top of the walls
+
+  std::size_t segments() const { return wall.size() - 1; }
+  Vec2 inward_normal(std::size_t segment) const;
+
+  // Exact signed distance to the container: the wall polyline with its two end
+  // points extended straight up without limit (a splash above the walls is still
+  // inside). Positive inside the fluid region. O(number of segments).
+  double signed_distance(Vec2 p) const;
+
+  // Height of the wall below x (the lowest wall crossing of the vertical line at x).
+  double bottom_at(double x) const;
+};
+
+// Builds the section of `spec.shape`. Throws InputError for an unknown shape or bad sizes.
+TankGeometry make_tank(const TankSpec& spec, const std::string& where);
+
+// Signed distance sampled on a grid (spacing ~dp/2) for O(1) look-ups in hot paths
+// (leak detection). Outside the sampled box it falls back to the exact distance.
+class ContainerDistance {
+ public:
+  ContainerDistance() = default;
+  ContainerDistance(const TankGeometry& tank, double spacing, double margin);
+  double operator()(Vec2 p) const;
+
+ private:
+  const TankGeometry* tank_ = nullptr;
+  Vec2 origin_;
+  double spacing_ = 1.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<double> value_;
+};
+
+struct WallSample {
+  Vec2 position;
+  Vec2 normal;  // inward unit normal of the wall at this particle
+};
+
+// Dummy wall particles: `layers` copies of the wall, offset outward by
+// (k + 1/2) dp, each sampled at equal arc length with spacing <= dp
+// (the "nonlinear curved grid" of thesis 3.3.2.1). Straight end walls are
+// sampled at exactly dp from the bottom corner so a rectangular tank gets a
+// lattice-aligned wall.
+std::vector<WallSample> sample_walls(const TankGeometry& tank, double dp, int layers);
+
+// Fluid particles on the lattice ((i + 1/2) dp, (j + 1/2) dp) above the lowest
+// point, below `depth`, inside the section and at least dp/2 from the wall.
+std::vector<Vec2> fill_fluid(const TankGeometry& tank, double dp, double depth);
+
+// Still-water free-surface width at `depth` (the lattice-independent length of the surface).
+double surface_width(const TankGeometry& tank, double depth);
+
+}  // namespace sloshsph

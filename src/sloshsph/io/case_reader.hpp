@@ -1,0 +1,25 @@
+#pragma once
+// TOML case file -> validated CaseSpec (SI units). Every key is checked: unknown
+// keys, wrong types and impossible values throw InputError naming file, line and key.
+// The full list of keys, units and defaults is docs/case-format.md.
+#include <string>
+#include <vector>
+
+#include "sloshsph/core/case_spec.hpp"
+
+namespace sloshsph {
+
+// Reads `path`, applies each "KEY=VALUE" of `overrides` (the --set options) in order.
+CaseSpec read_case_file(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The same from text; `source` names it in messages.
+CaseSpec read_case_text(const std::string& text, const std::string& source,
+                        const std::vector<std::string>& overrides = {});
+
+// The built-in default case run by `sloshsph run` with no CASE.
+const std::string& default_case_text();
+
+// The case with every value resolved (defaults filled in), as TOML: the copy kept in a run directory.
+std::string resolved_case_toml(const CaseSpec& spec);
+
+}  // namespace sloshsph

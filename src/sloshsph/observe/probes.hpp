@@ -1,0 +1,69 @@
+#pragma once
+// Wave gauges and pressure probes: kernel interpolation of the particle state at fixed
+// points of the tank frame. Methods and their limits are in docs/physics.md.
+#include <vector>
+
+#include "sloshsph/core/particles.hpp"
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+
+namespace sloshsph {
+
+// Height of the free surface above x: the highest y at which the kernel-interpolated fluid
+// fraction phi(y) = c_f / (c_full - c_w) reaches 1/2, where c_f and c_w are the kernel
+// sums sum_j V W over fluid and wall particles and c_full is that sum in undisturbed fluid.
+// The wall term keeps the fraction right within 2h of a wall. Returns y_floor if the column is dry.
+template <class K>
+double free_surface_height(const K& k, const Particles& p, double x, double y_floor, double c_full) {
+  const double reach = k.support();
+  std::vector<Vec2> fluid, wall;
+  double y_hi = y_floor;
+  for (std::size_t j = 0; j < p.n_fluid; ++j)
+    if (std::abs(p.position[j].x - x) < reach) {
+      fluid.push_back(p.position[j]);
+      y_hi = std::max(y_hi, p.position[j].y);
+    }
+  if (fluid.empty()) return y_floor;
+  for (std::size_t j = p.n_fluid; j < p.size(); ++j)
+    if (std::abs(p.position[j].x - x) < reach) wall.push_back(p.position[j]);
+
+  auto fraction = [&](double y) {
+    const Vec2 q{x, y};
+    double cf = 0.0, cw = 0.0;
+    for (const Vec2& r : fluid) cf += k.w(norm(q - r));
+    for (const Vec2& r : wall) cw += k.w(norm(q - r));
+    cf *= p.volume;
+    cw *= p.volume;
+    return cf / std::max(c_full - cw, 0.5 * c_full);
+  };
+  const double step = 0.05 * k.h;
+  double y_prev = y_hi + reach, f_prev = fraction(y_prev);
+  for (double y = y_prev - step; y > y_floor - step; y -= step) {
+    const double f = fraction(y);
+    if (f >= 0.5) {
+      const double t = (0.5 - f_prev) / (f - f_prev);  // linear between the bracketing samples
+      return y_prev + t * (y - y_prev);
+    }
+    y_prev = y;
+    f_prev = f;
+  }
+  return y_floor;
+}
+
+// Shepard interpolation of pressure at a point over fluid and wall particles (wall
+// particles carry the Adami pressure, the fluid pressure continued through the wall).
+// A probe with almost no fluid in its kernel (fluid kernel sum below 0.1) reads 0.
+template <class K>
+double pressure_at(const K& k, const Particles& p, const CellGrid& grid, Vec2 point) {
+  double num = 0.0, den = 0.0, fluid = 0.0;
+  grid.for_each_candidate(point, k.support(), [&](std::uint32_t j) {
+    const double W = k.w(norm(point - p.position[j]));
+    num += W * p.pressure[j];
+    den += W;
+    if (p.is_fluid(j)) fluid += W;
+  });
+  if (fluid * p.volume < 0.1 || den <= 0.0) return 0.0;
+  return num / den;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,58 @@
+#pragma once
+// Fixed dummy wall particles (Adami, Hu & Adams 2012), as thesis 2.4.3.1 and 3.3.2.2.
+#include <algorithm>
+#include <vector>
+
+#include "sloshsph/core/particles.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+
+namespace sloshsph {
+
+// Free slip: each wall particle takes the Shepard-averaged fluid velocity u~ around it with
+// its normal component reflected, u_w = u~ - 2 (u~ . n) n. In viscous and turbulent terms
+// the fluid then feels no tangential drag and twice its normal velocity (no penetration).
+// Uses the local wall normal, so it holds on sloped and curved walls (thesis 3.3.2.2).
+template <class K>
+void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourList& nl, std::vector<Vec2>& velocity) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
+    const Vec2 rw = p.position[w];
+    Vec2 sum;
+    double wsum = 0.0;
+    for (auto it = nl.begin(w); it != nl.end(w); ++it) {
+      const double W = k.w(norm(rw - p.position[*it]));
+      sum += W * p.velocity[*it];
+      wsum += W;
+    }
+    const Vec2 u = wsum > 0.0 ? sum / wsum : Vec2{};
+    const Vec2 n = p.normal[w];
+    velocity[w] = u - 2.0 * dot(u, n) * n;
+  }
+}
+
+// Thesis eq. 2.19 (Adami et al. 2012, eq. 27) with the frame acceleration:
+//   p_w = (sum_f p_f W_wf + (g - a) . sum_f rho_f (r_w - r_f) W_wf) / sum_f W_wf,
+// where body_force = g - a is the tank-frame body force. `position` gives the fluid positions to
+// use (r* inside a step). A wall particle with no fluid around it gets p = 0, and the result
+// is clipped at 0: above the free surface the extrapolation goes negative, and a negative wall
+// pressure would pull surface particles up along the wall (the fluid mirrored there is air, p = 0).
+template <class K>
+void adami_wall_pressure(const K& k, Particles& p, const NeighbourList& nl, const std::vector<Vec2>& position,
+                         Vec2 body_force, double rho0) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
+    const Vec2 rw = p.position[w];
+    double psum = 0.0, wsum = 0.0;
+    Vec2 rsum;
+    for (auto it = nl.begin(w); it != nl.end(w); ++it) {
+      const Vec2 rwf = rw - position[*it];
+      const double W = k.w(norm(rwf));
+      psum += W * p.pressure[*it];
+      rsum += W * rwf;
+      wsum += W;
+    }
+    p.pressure[w] = wsum > 0.0 ? std::max(0.0, (psum + rho0 * dot(body_force, rsum)) / wsum) : 0.0;
+  }
+}
+
+}  // namespace sloshsph

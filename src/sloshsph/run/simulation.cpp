@@ -1,0 +1,204 @@
+#include "sloshsph/run/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "sloshsph/core/errors.hpp"
+#include "sloshsph/linear/rectangular.hpp"
+#include "sloshsph/observe/probes.hpp"
+#include "sloshsph/sph/kernel.hpp"
+
+namespace sloshsph {
+
+double first_sloshing_omega(const CaseSpec& spec) {
+  return rectangular_sloshing_omega(spec.tank.length, spec.fill.depth, spec.fluid.gravity);
+}
+
+CaseSpec resolve_case(CaseSpec spec) {
+  ExcitationSpec& e = spec.excitation;
+  if (e.type == ExcitationType::harmonic) {
+    if (e.frequency) e.omega = 2.0 * std::numbers::pi * *e.frequency;
+    else e.omega = *e.beta * first_sloshing_omega(spec);
+    if (!(e.omega > 0.0) || !std::isfinite(e.omega))
+      throw InputError(spec.where("excitation.beta"), "excitation.beta", "gives no positive excitation frequency");
+  }
+  return spec;
+}
+
+Simulation::Simulation(const CaseSpec& spec)
+    : spec_(spec),
+      scene_(build_scene(spec)),
+      container_(*scene_.tank, 0.5 * spec.particles.dp, (spec.particles.wall_layers + 2) * spec.particles.dp),
+      scheme_(spec, scene_.h) {
+  speed_limit_ = spec_.run.max_speed_factor * std::sqrt(spec_.fluid.gravity * spec_.fill.depth);
+  c_full_ = scheme_.reference_density() / spec_.fluid.density;
+  const Vec2 body = tank_frame_body_force(spec_.fluid.gravity, base_motion(spec_.excitation, 0.0));
+  scheme_.initialise_walls(scene_.particles, body);
+  for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
+  build_columns();
+}
+
+void Simulation::build_columns() {
+  columns_ = {{"time", "s"}, {"x_base", "m"}, {"v_base", "m/s"}, {"a_base", "m/s^2"}};
+  for (const auto& g : spec_.gauges) columns_.push_back({"eta:" + g.name, "m"});
+  for (const auto& p : spec_.pressure_probes) columns_.push_back({"p:" + p.name, "Pa"});
+  columns_.insert(columns_.end(), {{"F_w", "N/m"},
+                                   {"F_sw", "N/m"},
+                                   {"F_wy", "N/m"},
+                                   {"W_base", "J/m"},
+                                   {"fluid_mass", "kg/m"},
+                                   {"E_kin", "J/m"},
+                                   {"E_pot", "J/m"},
+                                   {"leaked", "1"},
+                                   {"max_speed", "m/s"},
+                                   {"dt", "s"}});
+}
+
+double Simulation::next_dt() const {
+  double dt = spec_.time.dt;
+  if (spec_.time.adaptive) {
+    // Thesis 2.6.3.2: dt <= min(0.1 dp / u_max, 0.1 dp^2 / nu) with the factor time.cfl;
+    // plus the body-force bound 0.25 sqrt(h / |g - a|). time.dt is the ceiling.
+    const double dp = spec_.particles.dp;
+    const double cfl = spec_.time.cfl;
+    if (max_speed_ > 0.0) dt = std::min(dt, cfl * dp / max_speed_);
+    if (spec_.fluid.viscosity > 0.0) dt = std::min(dt, cfl * dp * dp / spec_.fluid.viscosity);
+    const Vec2 body = tank_frame_body_force(spec_.fluid.gravity, base_motion(spec_.excitation, time_));
+    if (norm(body) > 0.0) dt = std::min(dt, 0.25 * std::sqrt(scene_.h / norm(body)));
+  }
+  return std::min(dt, spec_.time.end - time_);
+}
+
+void Simulation::step() {
+  const double dt = next_dt();
+  if (!(dt > 0.0)) return;
+  const BaseMotion before = base_motion(spec_.excitation, time_);
+  // Body force at the middle of the step: second-order in time for the imposed motion.
+  const BaseMotion mid = base_motion(spec_.excitation, time_ + 0.5 * dt);
+  StepInput in;
+  in.dt = dt;
+  in.body_force = tank_frame_body_force(spec_.fluid.gravity, mid);
+  scheme_.step(scene_.particles, in);
+
+  const BaseMotion after = base_motion(spec_.excitation, time_ + dt);
+  const Vec2 wall_force = scheme_.diagnostics().wall_force;
+  acc_dt_ += dt;
+  acc_wall_force_ += dt * wall_force;
+  acc_base_acceleration_ += dt * mid.acceleration.x;
+  work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
+
+  ++steps_;
+  time_ = spec_.time.adaptive ? time_ + dt : std::min(steps_ * spec_.time.dt, spec_.time.end);
+  last_dt_ = dt;
+  max_speed_ = scheme_.diagnostics().max_speed;
+  remove_leaked();
+  check_state();
+}
+
+void Simulation::remove_leaked() {
+  Particles& p = scene_.particles;
+  const double limit = -0.5 * spec_.particles.dp;
+  std::vector<std::uint8_t> out(p.n_fluid, 0);
+  bool any = false;
+#pragma omp parallel for reduction(|| : any) schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    if (container_(p.position[i]) < limit) {
+      out[i] = 1;
+      any = true;
+    }
+  }
+  if (!any) return;
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    if (out[i]) leaks_.push_back({time_, p.id[i], p.position[i]});
+  p.remove_fluid(out);
+  const double fraction = static_cast<double>(leaks_.size()) / static_cast<double>(scene_.initial_fluid_count);
+  if (fraction > spec_.run.max_leaked_fraction) {
+    const LeakRecord& first = leaks_.front();
+    std::ostringstream m;
+    m << leaks_.size() << " fluid particles (" << 100.0 * fraction << "% of " << scene_.initial_fluid_count
+      << ") have left the tank by t = " << time_ << " s, more than run.max_leaked_fraction = "
+      << spec_.run.max_leaked_fraction << "; the first (id " << first.id << ") at t = " << first.time << " s near ("
+      << first.position.x << ", " << first.position.y << ") m";
+    throw RunFailure(m.str());
+  }
+}
+
+void Simulation::check_state() {
+  const Particles& p = scene_.particles;
+  std::size_t bad = p.size();
+#pragma omp parallel for reduction(min : bad) schedule(static)
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool ok = std::isfinite(p.position[i].x) && std::isfinite(p.position[i].y) && std::isfinite(p.velocity[i].x) &&
+                    std::isfinite(p.velocity[i].y) && std::isfinite(p.pressure[i]);
+    if (!ok) bad = std::min(bad, i);
+  }
+  if (bad < p.size()) {
+    std::ostringstream m;
+    m << "non-finite value at t = " << time_ << " s (step " << steps_ << ") in "
+      << (p.is_fluid(bad) ? "fluid" : "wall") << " particle id " << p.id[bad] << " at (" << p.position[bad].x << ", "
+      << p.position[bad].y << ") m: velocity (" << p.velocity[bad].x << ", " << p.velocity[bad].y << "), pressure "
+      << p.pressure[bad] << " Pa";
+    throw RunFailure(m.str());
+  }
+  if (max_speed_ > speed_limit_) {
+    std::size_t fast = 0;
+    for (std::size_t i = 0; i < p.n_fluid; ++i)
+      if (norm(p.velocity[i]) > norm(p.velocity[fast])) fast = i;
+    std::ostringstream m;
+    m << "speed " << max_speed_ << " m/s at t = " << time_ << " s (step " << steps_ << ") exceeds the bound "
+      << speed_limit_ << " m/s (run.max_speed_factor x sqrt(g depth)), fluid particle id " << p.id[fast] << " at ("
+      << p.position[fast].x << ", " << p.position[fast].y << ") m";
+    throw RunFailure(m.str());
+  }
+}
+
+double Simulation::surface_height(std::size_t gauge) const {
+  const double x = spec_.gauges[gauge].x;
+  const double floor = scene_.tank->bottom_at(x);
+  return with_kernel(spec_.particles.kernel, scene_.h,
+                     [&](const auto& k) { return free_surface_height(k, scene_.particles, x, floor, c_full_); });
+}
+
+double Simulation::probe_pressure(std::size_t probe) const {
+  CellGrid grid;
+  grid.build(scene_.particles.position, 0, scene_.particles.size(), 2.0 * scene_.h);
+  const Vec2 at = spec_.pressure_probes[probe].position;
+  return with_kernel(spec_.particles.kernel, scene_.h,
+                     [&](const auto& k) { return pressure_at(k, scene_.particles, grid, at); });
+}
+
+std::vector<double> Simulation::sample() {
+  const Particles& p = scene_.particles;
+  const BaseMotion m = base_motion(spec_.excitation, time_);
+  std::vector<double> v = {time_, m.displacement.x, m.velocity.x, m.acceleration.x};
+  for (std::size_t k = 0; k < spec_.gauges.size(); ++k) v.push_back(surface_height(k) - gauge_datum_[k]);
+  if (!spec_.pressure_probes.empty()) {
+    CellGrid grid;
+    grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
+    with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
+      for (const auto& probe : spec_.pressure_probes) v.push_back(pressure_at(k, p, grid, probe.position));
+    });
+  }
+  const double mass = fluid_mass();
+  Vec2 f_w;
+  double a_mean = 0.0;
+  if (acc_dt_ > 0.0) {
+    f_w = acc_wall_force_ / acc_dt_;
+    a_mean = acc_base_acceleration_ / acc_dt_;
+  }
+  double e_kin = 0.0, e_pot = 0.0;
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    e_kin += 0.5 * p.mass * norm2(p.velocity[i]);
+    e_pot += p.mass * spec_.fluid.gravity * (p.position[i].y - scene_.tank->y_bottom);
+  }
+  v.insert(v.end(), {f_w.x, f_w.x - mass * a_mean, f_w.y, work_on_fluid_, mass, e_kin, e_pot,
+                     static_cast<double>(leaks_.size()), max_speed_, last_dt_});
+  acc_dt_ = 0.0;
+  acc_wall_force_ = {};
+  acc_base_acceleration_ = 0.0;
+  return v;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,343 @@
+#include "sloshsph/schemes/isph.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+
+#include "sloshsph/physics/walls.hpp"
+#include "sloshsph/sph/kernel.hpp"
+
+namespace sloshsph {
+
+void IsphData::resize(std::size_t n) {
+  velocity_old.resize(n);
+  velocity_star.resize(n);
+  position_star.resize(n);
+  ppe_source.resize(n);
+  free_surface.resize(n);
+  sps_stress.resize(n);
+  wall_acceleration.resize(n);
+}
+
+double lattice_number_density(KernelType type, double h, double dp) {
+  return with_kernel(type, h, [&](const auto& k) {
+    const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+    double sum = 0.0;
+    for (int a = -n; a <= n; ++a)
+      for (int b = -n; b <= n; ++b) sum += k.w(dp * std::sqrt(double(a * a + b * b)));
+    return sum;
+  });
+}
+
+IsphScheme::IsphScheme(const CaseSpec& spec, double h)
+    : scheme_(spec.scheme),
+      kernel_type_(spec.particles.kernel),
+      h_(h),
+      dp_(spec.particles.dp),
+      rho0_(spec.fluid.density),
+      nu_(spec.fluid.viscosity),
+      eta2_(0.01 * h * 0.01 * h),
+      rho_ref_(spec.fluid.density * spec.particles.dp * spec.particles.dp *
+               lattice_number_density(spec.particles.kernel, h, spec.particles.dp)),
+      neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h) {}
+
+std::size_t IsphScheme::memory_bytes() const {
+  const std::size_t n = data_.velocity_old.capacity();
+  const std::size_t per = 4 * sizeof(Vec2) + sizeof(double) + 1 + sizeof(SymTensor2);
+  return n * per + neighbours_.memory_bytes();
+}
+
+void IsphScheme::update_neighbours(Particles& p) {
+  diagnostics_.neighbours_rebuilt = false;
+  if (!neighbours_.stale(p.position, p.n_fluid)) return;
+  // Keep the fluid in cell order: neighbours then sit close in memory.
+  p.permute_fluid(cell_order(p.position, p.n_fluid, neighbours_.search_radius()));
+  neighbours_.build(p.position, p.n_fluid);
+  diagnostics_.neighbours_rebuilt = true;
+}
+
+void IsphScheme::initialise_walls(Particles& p, Vec2 body_force) {
+  update_neighbours(p);
+  data_.resize(p.size());
+  with_kernel(kernel_type_, h_, [&](const auto& k) {
+    extrapolate_wall_velocity(k, p, neighbours_, p.velocity);
+    adami_wall_pressure(k, p, neighbours_, p.position, body_force, rho0_);
+  });
+}
+
+void IsphScheme::step(Particles& p, const StepInput& in) {
+  update_neighbours(p);
+  data_.resize(p.size());
+  with_kernel(kernel_type_, h_, [&](const auto& k) { step_with(k, p, in); });
+}
+
+// ---------------------------------------------------------------------------------------
+// The stages. Each is a gather loop over particles (each writes only itself), so the
+// result does not depend on the number of threads.
+
+namespace {
+
+// Velocity gradient (symmetrised) -> Smagorinsky eddy viscosity -> SPS stress tau/rho.
+// Thesis eqs. 2.8, 2.9: nu_t = (Cs dp)^2 |S|, |S| = sqrt(2 S:S), k_t = (nu_t / (Ct dp))^2,
+// tau/rho = 2 nu_t S - 2/3 k_t I. Walls carry their free-slip image velocity.
+template <class K>
+void sps_stress(const K& k, const Particles& p, const NeighbourList& nl, double cs, double ct, double dp,
+                std::vector<SymTensor2>& tau) {
+  const double V = p.volume;
+  const double l2 = (cs * dp) * (cs * dp);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    const Vec2 ri = p.position[i], ui = p.velocity[i];
+    double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
+    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - p.position[j];
+      const double F = k.gradient_factor(norm(rij));
+      if (F == 0.0) continue;
+      const Vec2 du = (p.velocity[j] - ui) * (V * F);
+      dudx += du.x * rij.x;
+      dudy += du.x * rij.y;
+      dvdx += du.y * rij.x;
+      dvdy += du.y * rij.y;
+    }
+    const double sxy = 0.5 * (dudy + dvdx);
+    const double s_mag = std::sqrt(2.0 * (dudx * dudx + dvdy * dvdy + 2.0 * sxy * sxy));
+    const double nu_t = l2 * s_mag;
+    const double kt = (nu_t / (ct * dp)) * (nu_t / (ct * dp));
+    tau[i] = {2.0 * nu_t * dudx - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * dvdy - 2.0 / 3.0 * kt};
+  }
+}
+
+// Eq. 2.10: u* = u + dt (nu lap u + div(tau)/rho + body force). Laminar term eq. 2.16 with
+// rho_i = rho_j = rho0: 8 m mu / (2 rho0)^2 = 2 V nu. SPS term eq. 2.17; a wall neighbour
+// mirrors the stress of particle i (zero normal gradient of tau at the wall).
+template <class K>
+void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, const StepInput& in, double nu,
+                      double eta2, bool turbulence, IsphData& d) {
+  const double V = p.volume;
+  const double two_nu_v = 2.0 * nu * V;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    const Vec2 ri = p.position[i], ui = p.velocity[i];
+    const SymTensor2 ti = turbulence ? d.sps_stress[i] : SymTensor2{};
+    Vec2 a_fluid, a_wall;
+    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - p.position[j];
+      const double r2 = norm2(rij);
+      const double F = k.gradient_factor(std::sqrt(r2));
+      if (F == 0.0) continue;
+      Vec2 a = (ui - p.velocity[j]) * (two_nu_v * F * r2 / (r2 + eta2));
+      if (turbulence) {
+        const SymTensor2 tj = p.is_fluid(j) ? d.sps_stress[j] : ti;
+        const double sxx = ti.xx + tj.xx, sxy = ti.xy + tj.xy, syy = ti.yy + tj.yy;
+        a += Vec2{sxx * rij.x + sxy * rij.y, sxy * rij.x + syy * rij.y} * (V * F);
+      }
+      if (p.is_fluid(j)) a_fluid += a;
+      else a_wall += a;
+    }
+    d.wall_acceleration[i] = a_wall;
+    d.velocity_old[i] = ui;
+    d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.body_force);
+  }
+}
+
+// Eq. 2.11 for fluid; walls stay where they are.
+void predict_position(const Particles& p, double dt, IsphData& d) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.size(); ++i)
+    d.position_star[i] = p.is_fluid(i) ? p.position[i] + dt * d.velocity_star[i] : p.position[i];
+}
+
+// Kernel-summed density at r*, the free-surface flag and the right-hand side of the
+// blended PPE.
+//  * rho* = m sum_j W(r*_ij), the density at the intermediate positions (eq. 2.12 by
+//    kernel summation; with rho0 in place of rho^n, as the extracted eq. 2.12 reads, the
+//    two source terms would be identical and alpha would do nothing).
+//  * Free surface (eq. 2.20): rho* below `threshold` times rho_ref, the kernel sum of
+//    undisturbed fluid (a lattice), means a truncated kernel: p = 0.
+//  * Source (eq. 2.13 in the dimensionally consistent form of thesis eq. 3.12):
+//      lap(p)/rho0 = alpha min(0, rho_ref - rho*) / (rho_ref dt^2) + (1 - alpha) div(u*) / dt.
+//    The density term acts on compression only: near the free surface rho* < rho_ref
+//    because the kernel is truncated, not because the fluid is rarefied, and that deficit
+//    would act as a suction (measured: unstable within 0.4 s at rest, docs/physics.md).
+//  * In div(u*) a wall particle carries u*_w = u_w + dt (g - a): its free-slip image velocity
+//    (the normal component of the nearby fluid reflected, which resists penetration) plus
+//    the body-force increment the fluid received. The wall pressure of eq. 2.19 already
+//    imposes dp/dn = rho (g - a).n; with u*_w = 0 the source would impose it a second time.
+template <class K>
+void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, const StepInput& in,
+                            double alpha, double rho_ref, double threshold, IsphData& d) {
+  const double V = p.volume, m = p.mass, w0 = k.w(0.0), dt = in.dt;
+  const Vec2 wall_increment = dt * in.body_force;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    const Vec2 ri = d.position_star[i], ui = d.velocity_star[i];
+    double wsum = w0, div = 0.0;
+    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - d.position_star[j];
+      const double r = norm(rij);
+      wsum += k.w(r);
+      const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j] : p.velocity[j] + wall_increment;
+      div += V * k.gradient_factor(r) * dot(uj - ui, rij);
+    }
+    const double rho_star = m * wsum;
+    p.density[i] = rho_star;
+    d.free_surface[i] = rho_star < threshold * rho_ref ? 1 : 0;
+    d.ppe_source[i] = alpha * std::min(0.0, rho_ref - rho_star) / (rho_ref * dt * dt) + (1.0 - alpha) * div / dt;
+  }
+}
+
+// Eq. 2.14 with the symmetric gradient of eq. 2.4 at r*:
+//   -grad(p)_i / rho0 = -(1/rho0) sum_j V (p_i + p_j) grad_i W_ij,
+// then eq. 2.15 for the position. Pressure forces of wall neighbours are kept apart for
+// the base shear.
+template <class K>
+void correct_and_advance(const K& k, Particles& p, const NeighbourList& nl, double dt, double rho0, IsphData& d) {
+  const double c = p.volume / rho0;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    const Vec2 ri = d.position_star[i];
+    const double pi = p.pressure[i];
+    Vec2 a_fluid, a_wall;
+    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - d.position_star[j];
+      const double F = k.gradient_factor(norm(rij));
+      const Vec2 a = rij * (-c * (pi + p.pressure[j]) * F);
+      if (p.is_fluid(j)) a_fluid += a;
+      else a_wall += a;
+    }
+    const Vec2 u_new = d.velocity_star[i] + dt * (a_fluid + a_wall);
+    d.wall_acceleration[i] += a_wall;
+    p.position[i] += 0.5 * dt * (d.velocity_old[i] + u_new);
+    p.velocity[i] = u_new;
+  }
+}
+
+}  // namespace
+
+template <class K>
+void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInput& in) {
+  // Eq. 2.18 (Yeylaghi et al. 2016): one Jacobi sweep of the discrete PPE per step from
+  // the previous pressures, p_i = (b_i + sum_j lambda_ij p_j) / sum_j lambda_ij, with
+  // lambda_ij = (2 V / rho0) F_ij r^2 / (r^2 + eta^2) (eq. 2.5 with rho_i = rho_j).
+  const double c = 2.0 * p.volume / rho0_;
+  const double eta2 = eta2_;
+  IsphData& d = data_;
+  std::vector<double>& next = d.ppe_source;  // overwritten in place: b_i is read once per i
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    if (d.free_surface[i]) {
+      next[i] = 0.0;
+      continue;
+    }
+    const Vec2 ri = d.position_star[i];
+    double diag = 0.0, off = 0.0;
+    for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - d.position_star[j];
+      const double r2 = norm2(rij);
+      const double lambda = c * k.gradient_factor(std::sqrt(r2)) * r2 / (r2 + eta2);
+      diag += lambda;
+      const bool zero = p.is_fluid(j) && d.free_surface[j];
+      off += zero ? 0.0 : lambda * p.pressure[j];
+    }
+    next[i] = diag != 0.0 ? (d.ppe_source[i] + off) / diag : 0.0;
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = next[i];
+  adami_wall_pressure(k, p, neighbours_, d.position_star, in.body_force, rho0_);
+  diagnostics_.solver_iterations = 1;
+  diagnostics_.solver_residual = 0.0;
+}
+
+template <class K>
+void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInput& in) {
+  // The same discrete equations as the explicit update, solved exactly each step:
+  // fluid rows  sum_j lambda_ij (p_i - p_j) = b_i        (free-surface p = 0),
+  // wall rows   sum_f W_wf p_w - sum_f W_wf p_f = (g - a)·sum_f rho0 r_wf W_wf   (eq. 2.19).
+  // Non-symmetric, so BiCGSTAB with a diagonal preconditioner, warm-started from p(t).
+  IsphData& d = data_;
+  const std::size_t n = p.size();
+  std::vector<int> unknown(n, -1);
+  int nu = 0;
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    if (!d.free_surface[i]) unknown[i] = nu++;
+  for (std::size_t w = p.n_fluid; w < n; ++w)
+    if (neighbours_.count(w) > 0) unknown[w] = nu++;
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(neighbours_.total_pairs() + n);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(nu), x0(nu);
+  const double c = 2.0 * p.volume / rho0_;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int row = unknown[i];
+    if (row < 0) continue;
+    x0[row] = p.pressure[i];
+    const Vec2 ri = d.position_star[i];
+    double diag = 0.0;
+    double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;
+    for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - d.position_star[j];
+      const double r2 = norm2(rij);
+      double coef;
+      if (p.is_fluid(i)) {
+        coef = c * k.gradient_factor(std::sqrt(r2)) * r2 / (r2 + eta2_);
+      } else {
+        coef = k.w(std::sqrt(r2));
+        rhs += dot(in.body_force, rij) * rho0_ * coef;
+      }
+      diag += coef;
+      if (unknown[j] >= 0) triplets.emplace_back(row, unknown[j], -coef);
+    }
+    if (diag == 0.0) diag = 1.0;  // isolated wall particle: p_w = 0
+    triplets.emplace_back(row, row, diag);
+    b[row] = rhs;
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor> A(nu, nu);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> solver;
+  solver.setTolerance(scheme_.solver_tolerance);
+  solver.setMaxIterations(scheme_.solver_max_iterations);
+  solver.compute(A);
+  const Eigen::VectorXd x = solver.solveWithGuess(b, x0);
+  diagnostics_.solver_iterations = static_cast<int>(solver.iterations());
+  diagnostics_.solver_residual = solver.error();
+  for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = unknown[i] >= 0 ? x[unknown[i]] : 0.0;
+  // Wall pressures from the solved fluid, with the clipping at 0 of adami_wall_pressure
+  // (the linear system cannot hold the clip; it matters only near the free surface).
+  adami_wall_pressure(k, p, neighbours_, d.position_star, in.body_force, rho0_);
+}
+
+template <class K>
+void IsphScheme::step_with(const K& k, Particles& p, const StepInput& in) {
+  IsphData& d = data_;
+  extrapolate_wall_velocity(k, p, neighbours_, p.velocity);                      // free slip, 2.4.3.1
+  if (scheme_.turbulence) sps_stress(k, p, neighbours_, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);  // 2.8-2.9
+  predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence, d);  // eq. 2.10
+  predict_position(p, in.dt, d);                                                 // eq. 2.11
+  density_and_ppe_source(k, p, neighbours_, in, scheme_.alpha, rho_ref_,     // eqs. 2.12, 2.13, 2.20
+                         scheme_.free_surface_threshold, d);
+  if (scheme_.pressure == PressureSolve::implicit_krylov) solve_pressure_implicit(k, p, in);
+  else solve_pressure_explicit(k, p, in);                                        // eq. 2.18 + 2.19
+  correct_and_advance(k, p, neighbours_, in.dt, rho0_, d);                      // eqs. 2.14, 2.15
+
+  // Diagnostics, reduced in a fixed order so they do not depend on the thread count.
+  Vec2 wall{};
+  double vmax2 = 0.0;
+  std::size_t surface = 0;
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    wall += d.wall_acceleration[i];
+    vmax2 = std::max(vmax2, norm2(p.velocity[i]));
+    surface += d.free_surface[i];
+  }
+  diagnostics_.wall_force = wall * p.mass;
+  diagnostics_.max_speed = std::sqrt(vmax2);
+  diagnostics_.free_surface = surface;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,87 @@
+#pragma once
+// Incompressible SPH of thesis chapter 2 (eqs. 2.1-2.20): a projection scheme with a
+// blended pressure Poisson equation, Adami dummy walls with free slip, free-surface
+// detection by kernel-summed density, laminar viscosity and SPS turbulence.
+//
+// The solver data (per-particle scratch arrays) live in IsphData, apart from the
+// solver; the particle store holds only what persists between steps.
+#include <cstdint>
+#include <vector>
+
+#include "sloshsph/core/case_spec.hpp"
+#include "sloshsph/core/particles.hpp"
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+
+namespace sloshsph {
+
+struct SymTensor2 {
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+};
+
+struct IsphData {
+  std::vector<Vec2> velocity_old;    // u(t)
+  std::vector<Vec2> velocity_star;   // u*, eq. 2.10
+  std::vector<Vec2> position_star;   // r*, eq. 2.11 (walls: their fixed position)
+  std::vector<double> ppe_source;    // right-hand side of eq. 2.13, 1/s^2
+  std::vector<std::uint8_t> free_surface;  // eq. 2.20
+  std::vector<SymTensor2> sps_stress;      // tau / rho, eq. 2.8, m^2/s^2
+  std::vector<Vec2> wall_acceleration;     // acceleration of each fluid particle due to wall particles
+  void resize(std::size_t n);
+};
+
+struct StepInput {
+  double dt = 0.0;     // s
+  Vec2 body_force;     // m/s^2, gravity and frame forces in the tank frame
+};
+
+struct StepDiagnostics {
+  Vec2 wall_force;               // N/m: total force of the walls on the fluid (base shear, thesis eq. 4.21)
+  double max_speed = 0.0;        // m/s, fluid, after the step
+  std::size_t free_surface = 0;  // particles flagged free surface this step
+  int solver_iterations = 0;     // implicit PPE (explicit: sweeps)
+  double solver_residual = 0.0;  // implicit PPE, relative
+  bool neighbours_rebuilt = false;
+};
+
+class IsphScheme {
+ public:
+  IsphScheme(const CaseSpec& spec, double h);
+
+  // One time step of thesis Figure 2.1; particles are advanced in place.
+  void step(Particles& particles, const StepInput& input);
+
+  // Wall pressure (eq. 2.19) and free-slip wall velocity for the current fluid state,
+  // e.g. before the first step or after a restart.
+  void initialise_walls(Particles& particles, Vec2 body_force);
+
+  const StepDiagnostics& diagnostics() const { return diagnostics_; }
+  const NeighbourList& neighbours() const { return neighbours_; }
+  double reference_density() const { return rho_ref_; }
+  double h() const { return h_; }
+  std::size_t memory_bytes() const;
+
+ private:
+  template <class K> void step_with(const K& kernel, Particles& p, const StepInput& in);
+  template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
+  template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
+  void update_neighbours(Particles& p);
+
+  SchemeSpec scheme_;
+  KernelType kernel_type_;
+  double h_;
+  double dp_;
+  double rho0_;
+  double nu_;
+  double eta2_;     // (0.01 h)^2, eqs. 2.5 and 2.16
+  double rho_ref_;  // kernel sum of a full lattice: the density of the undisturbed fluid
+  NeighbourList neighbours_;
+  IsphData data_;
+  StepDiagnostics diagnostics_;
+};
+
+// Kernel sum m * sum_j W(r_ij) of an interior particle of a square lattice of spacing dp,
+// divided by the particle mass: the number density of undisturbed fluid (about 1/dp^2).
+double lattice_number_density(KernelType type, double h, double dp);
+
+}  // namespace sloshsph

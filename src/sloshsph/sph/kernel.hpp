@@ -1,0 +1,79 @@
+#pragma once
+// 2D smoothing kernels with compact support 2h.
+// Each kernel offers w(r), and gradient_factor(r) = (dW/dr) / r, so that
+// grad_i W_ij = gradient_factor(r_ij) * (r_i - r_j): no division by r, safe at r = 0.
+#include <numbers>
+
+#include "sloshsph/core/case_spec.hpp"
+
+namespace sloshsph {
+
+// Wendland C2 (thesis eq. 2.3): W = 7/(4 pi h^2) (1 + 2q)(1 - q/2)^4, q = r/h <= 2.
+// dW/dq = 7/(4 pi h^2) (-5q)(1 - q/2)^3. The extracted thesis text prints the
+// derivative with (1 - q/3)^3; the derivative of eq. 2.3 has (1 - q/2)^3.
+struct WendlandC2 {
+  double h;
+  double inv_h;
+  double norm;  // 7 / (4 pi h^2)
+
+  explicit WendlandC2(double h_)
+      : h(h_), inv_h(1.0 / h_), norm(7.0 / (4.0 * std::numbers::pi * h_ * h_)) {}
+
+  double support() const { return 2.0 * h; }
+
+  double w(double r) const {
+    const double q = r * inv_h;
+    if (q >= 2.0) return 0.0;
+    const double a = 1.0 - 0.5 * q;
+    const double a2 = a * a;
+    return norm * (1.0 + 2.0 * q) * a2 * a2;
+  }
+
+  // (dW/dr) / r = norm * (-5 q (1 - q/2)^3) / (h r) = -5 norm (1 - q/2)^3 / h^2.
+  double gradient_factor(double r) const {
+    const double q = r * inv_h;
+    if (q >= 2.0) return 0.0;
+    const double a = 1.0 - 0.5 * q;
+    return -5.0 * norm * a * a * a * inv_h * inv_h;
+  }
+};
+
+// Cubic B-spline (Monaghan & Lattanzio 1985), 2D normalisation 10 / (7 pi h^2).
+struct CubicSpline {
+  double h;
+  double inv_h;
+  double norm;
+
+  explicit CubicSpline(double h_)
+      : h(h_), inv_h(1.0 / h_), norm(10.0 / (7.0 * std::numbers::pi * h_ * h_)) {}
+
+  double support() const { return 2.0 * h; }
+
+  double w(double r) const {
+    const double q = r * inv_h;
+    if (q >= 2.0) return 0.0;
+    if (q < 1.0) return norm * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+    const double a = 2.0 - q;
+    return norm * 0.25 * a * a * a;
+  }
+
+  // dW/dq = norm (-3q + 9/4 q^2) for q < 1, norm (-3/4 (2-q)^2) for 1 <= q < 2.
+  double gradient_factor(double r) const {
+    const double q = r * inv_h;
+    if (q >= 2.0) return 0.0;
+    if (q < 1.0) return norm * (-3.0 + 2.25 * q) * inv_h * inv_h;
+    if (r <= 0.0) return 0.0;
+    const double a = 2.0 - q;
+    return norm * (-0.75 * a * a) * inv_h / r;
+  }
+};
+
+// Calls f(kernel) with the concrete kernel type selected at run time, so that
+// hot loops are compiled once per kernel with no per-pair dispatch.
+template <class F>
+decltype(auto) with_kernel(KernelType type, double h, F&& f) {
+  if (type == KernelType::cubic_spline) return f(CubicSpline(h));
+  return f(WendlandC2(h));
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,100 @@
+#pragma once
+// Cell-linked list and a Verlet neighbour list in compressed-row form.
+// The list is built with a skin around the kernel support and reused until some
+// fluid particle has moved more than half the skin; every sweep of a time step
+// then reads the same list (gather style: each particle reads its own row).
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sloshsph/core/vec2.hpp"
+
+namespace sloshsph {
+
+// Uniform grid of square cells; particle indices sorted by cell (counting sort, stable).
+class CellGrid {
+ public:
+  void build(const std::vector<Vec2>& position, std::size_t begin, std::size_t end, double cell_size);
+
+  double cell_size() const { return cell_size_; }
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  int cell_x(double x) const { return clamp_index(static_cast<int>(std::floor((x - origin_.x) / cell_size_)), nx_); }
+  int cell_y(double y) const { return clamp_index(static_cast<int>(std::floor((y - origin_.y) / cell_size_)), ny_); }
+  int cell_of(Vec2 p) const { return cell_x(p.x) + nx_ * cell_y(p.y); }
+  // Particles of cell c: sorted()[cell_start()[c] .. cell_start()[c + 1]).
+  const std::vector<std::uint32_t>& cell_start() const { return cell_start_; }
+  const std::vector<std::uint32_t>& sorted() const { return sorted_; }
+
+  // Calls f(j) for every indexed particle in the cells overlapping the disc (p, radius).
+  // The caller checks the exact distance.
+  template <class F>
+  void for_each_candidate(Vec2 p, double radius, F&& f) const {
+    if (sorted_.empty()) return;
+    const int x0 = cell_x(p.x - radius), x1 = cell_x(p.x + radius);
+    const int y0 = cell_y(p.y - radius), y1 = cell_y(p.y + radius);
+    for (int cy = y0; cy <= y1; ++cy)
+      for (int cx = x0; cx <= x1; ++cx) {
+        const int c = cx + nx_ * cy;
+        for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) f(sorted_[k]);
+      }
+  }
+
+ private:
+  static int clamp_index(int i, int n) { return i < 0 ? 0 : (i >= n ? n - 1 : i); }
+  double cell_size_ = 1.0;
+  Vec2 origin_;
+  int nx_ = 0, ny_ = 0;
+  std::vector<std::uint32_t> cell_start_;
+  std::vector<std::uint32_t> sorted_;
+};
+
+class NeighbourList {
+ public:
+  // support: kernel support radius (2h); skin: extra search distance.
+  NeighbourList(double support, double skin) : support_(support), skin_(skin) {}
+
+  // True when the list must be rebuilt: never built, particle count changed,
+  // or a fluid particle moved more than skin/2 since the last build.
+  bool stale(const std::vector<Vec2>& position, std::size_t n_fluid) const;
+
+  // Rows for all particles: fluid rows hold fluid and wall neighbours, wall rows
+  // only fluid neighbours (walls never interact with walls). Self is excluded.
+  void build(const std::vector<Vec2>& position, std::size_t n_fluid);
+
+  // Rebuilds if stale; returns true if it did.
+  bool update(const std::vector<Vec2>& position, std::size_t n_fluid) {
+    if (!stale(position, n_fluid)) return false;
+    build(position, n_fluid);
+    return true;
+  }
+
+  void invalidate() { built_ = false; }
+
+  const std::uint32_t* begin(std::size_t i) const { return index_.data() + offset_[i]; }
+  const std::uint32_t* end(std::size_t i) const { return index_.data() + offset_[i + 1]; }
+  std::size_t count(std::size_t i) const { return offset_[i + 1] - offset_[i]; }
+  std::size_t total_pairs() const { return index_.size(); }
+  double search_radius() const { return support_ + skin_; }
+  double skin() const { return skin_; }
+  std::size_t builds() const { return builds_; }
+  const CellGrid& grid() const { return grid_; }
+  std::size_t memory_bytes() const;
+
+ private:
+  double support_;
+  double skin_;
+  bool built_ = false;
+  std::size_t builds_ = 0;
+  std::size_t n_fluid_at_build_ = 0;
+  CellGrid grid_;
+  std::vector<Vec2> position_at_build_;
+  std::vector<std::size_t> offset_;
+  std::vector<std::uint32_t> index_;
+};
+
+// Fluid order that follows the cells of a grid of the given size (for memory locality).
+std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::size_t n_fluid, double cell_size);
+
+}  // namespace sloshsph
