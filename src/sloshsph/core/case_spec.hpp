@@ -18,9 +18,14 @@ struct FluidSpec {
 };
 
 struct TankSpec {
+  // "rectangle", "sloped" (alias "triangle", "trapezoid"), "parabolic", "circular", "polyline".
   std::string shape = "rectangle";
-  double length = 0.0;  // m, inner length
-  double height = 0.0;  // m, wall height above the lowest point of the bottom
+  double length = 0.0;        // m, inner length (width of the section at the top of the walls)
+  double height = 0.0;        // m, wall height above the lowest point of the bottom
+  double coefficient = 1.0;   // 1/m, parabolic: bottom y = coefficient * (x - length/2)^2
+  double angle = 45.0;        // deg, sloped: bottom slope from the horizontal
+  double bottom_width = 0.0;  // m, sloped: flat part of the bottom, centred
+  std::vector<Vec2> points;   // m, polyline: the wall from the top left, down, to the top right
 };
 
 struct FillSpec {
