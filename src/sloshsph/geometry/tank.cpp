@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <sstream>
 
 #include "sloshsph/core/errors.hpp"
 
@@ -39,6 +41,179 @@ TankGeometry rectangle(const TankSpec& spec, const std::string& where) {
   check_positive(spec.height, where, "tank.height");
   TankGeometry t;
   t.wall = {{0.0, spec.height}, {0.0, 0.0}, {spec.length, 0.0}, {spec.length, spec.height}};
+  return t;
+}
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Appends the curve c(u), u in [u0, u1], as a chain of straight segments no longer
+// than max_segment (the first point is not appended: it is already the chain's last).
+// An even number of equal parameter steps so the parameter midpoint is a vertex.
+template <class Curve>
+void append_curve(std::vector<Vec2>& chain, Curve&& c, double u0, double u1, double max_segment) {
+  constexpr int kProbe = 64;
+  double longest = 0.0;
+  for (int k = 0; k < kProbe; ++k)
+    longest = std::max(longest, norm(c(u0 + (u1 - u0) * (k + 1) / kProbe) - c(u0 + (u1 - u0) * k / kProbe)));
+  int n = static_cast<int>(std::ceil(1.05 * kProbe * longest / max_segment));  // 5% margin on the chord estimate
+  n = std::max(2, n + (n % 2));
+  for (int k = 1; k <= n; ++k) chain.push_back(c(u0 + (u1 - u0) * k / n));
+}
+
+// Curved walls are discretised much finer than any particle spacing (the sampler then
+// places particles at equal arc length along this chain).
+double curve_segment(const TankSpec& spec) { return spec.length / 2000.0; }
+
+// Appends p unless it repeats the chain's last point (no zero-length segments).
+void append_point(std::vector<Vec2>& chain, Vec2 p) {
+  if (norm(p - chain.back()) > 1e-12 * (1.0 + norm(p))) chain.push_back(p);
+}
+
+std::vector<Vec2> mirrored_walls(std::vector<Vec2> left_to_bottom, double length) {
+  // left_to_bottom runs from the top left to the lowest point at x = length/2; mirror it.
+  const std::size_t n = left_to_bottom.size();
+  for (std::size_t k = n - 1; k-- > 0;) left_to_bottom.push_back({length - left_to_bottom[k].x, left_to_bottom[k].y});
+  return left_to_bottom;
+}
+
+// Parabolic bottom y = c (x - L/2)^2 (thesis eq. 3.23 with B = 0, C = L/2), vertical
+// walls above the points where it meets x = 0 and x = L if that is below the wall top.
+TankGeometry parabolic(const TankSpec& spec, const std::string& where) {
+  check_positive(spec.length, where, "tank.length");
+  check_positive(spec.height, where, "tank.height");
+  check_positive(spec.coefficient, where, "tank.coefficient");
+  const double c = spec.coefficient, half = 0.5 * spec.length;
+  const double y_end = c * half * half;  // height of the parabola at x = 0 and x = L
+  double x_start = 0.0;
+  if (y_end > spec.height) {
+    // The parabola reaches the wall top inside the section: its top width must be the
+    // given length (tank.length is the width at the top of the walls), within 1%.
+    const double top_width = 2.0 * std::sqrt(spec.height / c);
+    if (top_width < 0.99 * spec.length)
+      throw InputError(where, "tank.length",
+                       "the parabola y = " + number(c) + " (x - L/2)^2 reaches the wall top (tank.height = " +
+                           number(spec.height) + " m) at a width of " + number(top_width) +
+                           " m, narrower than tank.length = " + number(spec.length) +
+                           " m: set tank.length to that width, or tank.height to at least " + number(y_end) +
+                           " m for vertical walls above the parabola");
+    x_start = half - 0.5 * top_width;
+  }
+  TankGeometry t;
+  t.wall.push_back({0.0, spec.height});
+  if (x_start > 0.0) t.wall.back() = {x_start, spec.height};
+  else append_point(t.wall, {0.0, y_end});
+  auto curve = [&](double x) { return Vec2{x, c * (x - half) * (x - half)}; };
+  append_curve(t.wall, curve, x_start, half, curve_segment(spec));
+  t.wall.back() = {half, 0.0};  // exact lowest point
+  t.wall = mirrored_walls(t.wall, spec.length);
+  return t;
+}
+
+// Lower half of a circle of diameter L centred at (L/2, L/2), vertical walls above the centre line.
+TankGeometry circular(const TankSpec& spec, const std::string& where) {
+  check_positive(spec.length, where, "tank.length");
+  check_positive(spec.height, where, "tank.height");
+  const double r = 0.5 * spec.length;
+  if (spec.height < r * (1.0 - 1e-9))
+    throw InputError(where, "tank.height",
+                     "a circular section is the lower half of a circle of diameter tank.length = " +
+                         number(spec.length) + " m: tank.height must be at least its radius (" + number(r) + " m)");
+  constexpr double pi = std::numbers::pi;
+  TankGeometry t;
+  t.wall.push_back({0.0, spec.height});
+  append_point(t.wall, {0.0, r});
+  auto curve = [&](double a) { return Vec2{r + r * std::cos(a), r + r * std::sin(a)}; };
+  append_curve(t.wall, curve, pi, 1.5 * pi, curve_segment(spec));
+  t.wall.back() = {r, 0.0};
+  t.wall = mirrored_walls(t.wall, spec.length);
+  return t;
+}
+
+// V (bottom_width = 0) or trapezoidal bottom, slopes at `angle` from the horizontal,
+// vertical walls above the slopes. If the slopes reach the wall top before x = 0 and
+// x = L, the section ends there and is narrower than tank.length.
+TankGeometry sloped(const TankSpec& spec, const std::string& where) {
+  check_positive(spec.length, where, "tank.length");
+  check_positive(spec.height, where, "tank.height");
+  if (!(spec.angle > 0.0 && spec.angle < 90.0))
+    throw InputError(where, "tank.angle", "the bottom slope must be between 0 and 90 degrees (got " +
+                                              number(spec.angle) + ")");
+  if (!(spec.bottom_width >= 0.0 && spec.bottom_width < spec.length))
+    throw InputError(where, "tank.bottom_width", "must be at least 0 and less than tank.length (got " +
+                                                     number(spec.bottom_width) + " m)");
+  if (spec.shape == "triangle" && spec.bottom_width != 0.0)
+    throw InputError(where, "tank.bottom_width", "a triangle bottom has no flat part: bottom_width must be 0");
+  if (spec.shape == "trapezoid" && !(spec.bottom_width > 0.0))
+    throw InputError(where, "tank.bottom_width", "a trapezoid bottom needs a flat part: bottom_width > 0");
+  const double slope = std::tan(spec.angle * std::numbers::pi / 180.0);
+  const double toe = 0.5 * (spec.length - spec.bottom_width);  // x of the left end of the flat part
+  TankGeometry t;
+  if (toe * slope < spec.height * (1.0 - 1e-12)) {  // the slope meets x = 0 below the wall top
+    t.wall.push_back({0.0, spec.height});
+    t.wall.push_back({0.0, toe * slope});
+  } else {
+    t.wall.push_back({toe - spec.height / slope, spec.height});
+  }
+  t.wall.push_back({toe, 0.0});
+  if (spec.bottom_width > 0.0) t.wall.push_back({spec.length - toe, 0.0});
+  const std::size_t n = t.wall.size() - (spec.bottom_width > 0.0 ? 2 : 1);
+  for (std::size_t k = n; k-- > 0;) t.wall.push_back({spec.length - t.wall[k].x, t.wall[k].y});
+  return t;
+}
+
+bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  auto orient = [](Vec2 p, Vec2 q, Vec2 r) { return cross(q - p, r - p); };
+  auto on_segment = [](Vec2 p, Vec2 q, Vec2 r) {  // r collinear with pq: within its box?
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) || (d3 == 0 && on_segment(a, b, c)) ||
+         (d4 == 0 && on_segment(a, b, d));
+}
+
+// The wall given point by point, from the top left, down, to the top right.
+TankGeometry polyline(const TankSpec& spec, const std::string& where) {
+  const std::vector<Vec2>& p = spec.points;
+  auto fail = [&](const std::string& why) { throw InputError(where, "tank.points", why); };
+  if (p.size() < 3) fail("a polyline wall needs at least 3 points (top left, bottom, top right)");
+  for (const Vec2& q : p)
+    if (!std::isfinite(q.x) || !std::isfinite(q.y)) fail("every point must be finite");
+  const double top = std::min(p.front().y, p.back().y);
+  for (std::size_t k = 1; k + 1 < p.size(); ++k)
+    if (!(p[k].y < top))
+      fail("point " + std::to_string(k + 1) + " is not below both end points: the first and the last point must be "
+           "the highest (the tops of the walls)");
+  for (std::size_t k = 0; k + 1 < p.size(); ++k)
+    if (norm(p[k + 1] - p[k]) <= 0.0) fail("points " + std::to_string(k + 1) + " and " + std::to_string(k + 2) + " coincide");
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    // Adjacent segments share a point: they intersect elsewhere only if they fold back.
+    if (i + 2 < p.size() && std::abs(cross(p[i + 1] - p[i], p[i + 2] - p[i + 1])) == 0.0 &&
+        dot(p[i + 1] - p[i], p[i + 2] - p[i + 1]) < 0.0)
+      fail("the wall folds back on itself at point " + std::to_string(i + 2));
+    for (std::size_t j = i + 2; j + 1 < p.size(); ++j)
+      if (segments_intersect(p[i], p[i + 1], p[j], p[j + 1]))
+        fail("segments " + std::to_string(i + 1) + " and " + std::to_string(j + 1) + " of the wall intersect");
+  }
+  // The container (the chain, its ends raised, closed far above) must wind
+  // counter-clockwise: the fluid on the left of the travel, i.e. going down the left wall
+  // the interior is at +x.
+  const double y_far = std::max(p.front().y, p.back().y) + 1.0;
+  double area2 = 0.0;
+  std::vector<Vec2> ring = p;
+  ring.push_back({p.back().x, y_far});
+  ring.push_back({p.front().x, y_far});
+  for (std::size_t k = 0; k < ring.size(); ++k) area2 += cross(ring[k], ring[(k + 1) % ring.size()]);
+  if (!(area2 > 0.0))
+    fail("the points must run from the top of the LEFT wall, down through the bottom, to the top of the RIGHT "
+         "wall (the fluid on the left-hand side of the travel)");
+  TankGeometry t;
+  t.wall = p;
   return t;
 }
 
@@ -149,11 +324,57 @@ TankGeometry make_tank(const TankSpec& spec, const std::string& where) {
   TankGeometry t;
   if (spec.shape == "rectangle") {
     t = rectangle(spec, where);
+  } else if (spec.shape == "parabolic") {
+    t = parabolic(spec, where);
+  } else if (spec.shape == "circular") {
+    t = circular(spec, where);
+  } else if (spec.shape == "sloped" || spec.shape == "triangle" || spec.shape == "trapezoid") {
+    t = sloped(spec, where);
+  } else if (spec.shape == "polyline") {
+    t = polyline(spec, where);
   } else {
-    throw InputError(where, "tank.shape", "unknown shape '" + spec.shape + "' (expected: rectangle)");
+    throw InputError(where, "tank.shape",
+                     "unknown shape '" + spec.shape +
+                         "' (expected: rectangle, sloped, triangle, trapezoid, parabolic, circular, polyline)");
   }
   finish(t);
   return t;
+}
+
+std::vector<Vec2> still_water_polygon(const TankGeometry& tank, double depth) {
+  const std::vector<Vec2>& w = tank.wall;
+  const double level = tank.y_bottom + depth;
+  if (!(depth > 0.0) || !std::isfinite(depth)) throw InputError("", "fill.depth", "the depth must be a positive number");
+  if (level > std::min(w.front().y, w.back().y))
+    throw InputError("", "fill.depth", "the still level (depth " + number(depth) + " m) is above the top of the walls");
+  // Crossings of the level by the chain: a vertex exactly at the level counts as above.
+  std::vector<std::pair<std::size_t, Vec2>> crossings;
+  for (std::size_t k = 0; k + 1 < w.size(); ++k) {
+    const bool a_below = w[k].y < level, b_below = w[k + 1].y < level;
+    if (a_below == b_below) continue;
+    const double t = (level - w[k].y) / (w[k + 1].y - w[k].y);
+    crossings.push_back({k, {w[k].x + t * (w[k + 1].x - w[k].x), level}});
+  }
+  if (crossings.size() != 2)
+    throw InputError("", "fill.depth",
+                     "the still level (depth " + number(depth) + " m) meets the wall " +
+                         std::to_string(crossings.size()) +
+                         " times: only a single pool with one free surface is supported");
+  std::vector<Vec2> poly{crossings[0].second};
+  for (std::size_t k = crossings[0].first + 1; k <= crossings[1].first; ++k) poly.push_back(w[k]);
+  poly.push_back(crossings[1].second);
+  // Drop repeated points (a crossing on a vertex).
+  std::vector<Vec2> out;
+  for (const Vec2& q : poly)
+    if (out.empty() || norm(q - out.back()) > 1e-14 * (1.0 + norm(q))) out.push_back(q);
+  return out;
+}
+
+double section_area(const TankGeometry& tank, double depth) {
+  const std::vector<Vec2> poly = still_water_polygon(tank, depth);
+  double area2 = 0.0;
+  for (std::size_t k = 0; k < poly.size(); ++k) area2 += cross(poly[k], poly[(k + 1) % poly.size()]);
+  return 0.5 * area2;
 }
 
 ContainerDistance::ContainerDistance(const TankGeometry& tank, double spacing, double margin)

@@ -32,7 +32,32 @@ struct TankGeometry {
 };
 
 // Builds the section of `spec.shape`. Throws InputError for an unknown shape or bad sizes.
+//  rectangle  flat bottom, length x height.
+//  parabolic  bottom y = coefficient (x - length/2)^2 (thesis eq. 3.23, B = 0, C = L/2), vertical
+//             walls above x = 0 and x = length if the parabola meets them below `height`;
+//             otherwise the parabola up to `height`, whose top width must then be `length`
+//             within 1% (InputError tank.length).
+//  circular   lower half of a circle of diameter `length` centred at (L/2, L/2), vertical walls
+//             above the centre line up to `height` (>= L/2, else InputError tank.height).
+//  sloped     (aliases triangle: bottom_width = 0, trapezoid: bottom_width > 0) flat part of
+//             `bottom_width` centred, slopes at `angle` degrees from the horizontal, vertical walls
+//             above them. If the slopes reach `height` before x = 0 / length, the walls end
+//             there: the section is then narrower than `length`.
+//  polyline   `points` from the top left, down, to the top right, kept as given (y_bottom is
+//             the lowest point); validated: >= 3 points, the ends highest, no self-intersection,
+//             fluid on the left of the travel (InputError tank.points).
+// Curved bottoms are chains of straight segments no longer than length/2000.
 TankGeometry make_tank(const TankSpec& spec, const std::string& where);
+
+// The still-water region below the level y_bottom + depth: a counter-clockwise polygon
+// (the wall chain from the left crossing of the level down to the right crossing; the
+// closing edge is the free surface). Throws InputError (key fill.depth) when the depth is
+// not positive, the level is above the top of a wall, or the level meets the wall more
+// than twice (several pools).
+std::vector<Vec2> still_water_polygon(const TankGeometry& tank, double depth);
+
+// Area (m^2, per metre of width) of the still-water region below `depth`.
+double section_area(const TankGeometry& tank, double depth);
 
 // Signed distance sampled on a grid (spacing ~dp/2) for O(1) look-ups in hot paths
 // (leak detection). Outside the sampled box it falls back to the exact distance.

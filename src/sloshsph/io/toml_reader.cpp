@@ -72,7 +72,7 @@ TableReader::TableReader(const toml::table& table, std::string prefix, std::shar
 
 std::string TableReader::location(const std::string& key) const {
   const std::string dotted = path(key);
-  if (context_->overridden.count(dotted)) return "--set " + dotted;
+  if (context_->overridden.count(dotted)) return context_->file + " (--set " + dotted + ")";
   const toml::node* n = key.empty() ? nullptr : table_->get(key);
   const toml::source_region& src = n ? n->source() : table_->source();
   if (src.begin.line > 0) return context_->file + ":" + std::to_string(src.begin.line);
@@ -262,7 +262,7 @@ void TableReader::finish() const {
     std::string what = "unknown key";
     if (!best.empty()) what += " (did you mean '" + path(best) + "'?)";
     what += "; known keys here: " + known;
-    const std::string where = context_->overridden.count(path(key)) ? "--set " + path(key)
+    const std::string where = context_->overridden.count(path(key)) ? context_->file + " (--set " + path(key) + ")"
                               : v.source().begin.line > 0
                                   ? context_->file + ":" + std::to_string(v.source().begin.line)
                                   : context_->file;
@@ -273,12 +273,12 @@ void TableReader::finish() const {
 void apply_override(toml::table& root, const std::string& assignment, TomlContext& context) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError("--set " + assignment, "", "expected KEY=VALUE, e.g. --set time.end=2");
+    throw InputError(context.file + " (--set " + assignment + ")", "", "expected KEY=VALUE, e.g. --set time.end=2");
   const std::string key = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
   const std::vector<std::string> parts = split(key, '.');
   for (const auto& p : parts)
-    if (p.empty()) throw InputError("--set " + assignment, key, "malformed key (empty segment)");
+    if (p.empty()) throw InputError(context.file + " (--set " + assignment + ")", key, "malformed key (empty segment)");
 
   toml::table parsed;
   try {
@@ -291,16 +291,21 @@ void apply_override(toml::table& root, const std::string& assignment, TomlContex
   toml::node* cur = &root;
   for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
     const std::string& seg = parts[k];
+    std::string parent;
+    for (std::size_t m = 0; m < k; ++m) parent += (m ? "." : "") + parts[m];
+    parent = k == 0 ? std::string("the case") : "'" + parent + "'";
+    if (is_index(seg) && !cur->is_array())
+      throw InputError(context.file + " (--set " + assignment + ")", key, parent + " is not an array of tables, so '" + seg + "' cannot index it");
     if (toml::table* t = cur->as_table()) {
       if (!t->contains(seg)) t->insert(seg, toml::table{});
       cur = t->get(seg);
     } else if (toml::array* a = cur->as_array(); a && is_index(seg)) {
       const std::size_t idx = std::stoul(seg);
       if (idx >= a->size())
-        throw InputError("--set " + assignment, key, "index " + seg + " is out of range (" + std::to_string(a->size()) + " entries)");
+        throw InputError(context.file + " (--set " + assignment + ")", key, "index " + seg + " is out of range (" + std::to_string(a->size()) + " entries)");
       cur = a->get(idx);
     } else {
-      throw InputError("--set " + assignment, key, "'" + seg + "' does not name a table");
+      throw InputError(context.file + " (--set " + assignment + ")", key, "'" + seg + "' does not name a table");
     }
   }
   const std::string& last = parts.back();
@@ -309,7 +314,7 @@ void apply_override(toml::table& root, const std::string& assignment, TomlContex
   } else if (toml::array* a = cur->as_array(); a && is_index(last) && std::stoul(last) < a->size()) {
     a->replace(a->begin() + static_cast<std::ptrdiff_t>(std::stoul(last)), *parsed.get("v"));
   } else {
-    throw InputError("--set " + assignment, key, "the parent of '" + last + "' is not a table");
+    throw InputError(context.file + " (--set " + assignment + ")", key, "the parent of '" + last + "' is not a table");
   }
   context.overridden.insert(key);
 }

@@ -35,7 +35,7 @@ Simulation::Simulation(const CaseSpec& spec)
   speed_limit_ = spec_.run.max_speed_factor * std::sqrt(spec_.fluid.gravity * spec_.fill.depth);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   const Vec2 body = tank_frame_body_force(spec_.fluid.gravity, base_motion(spec_.excitation, 0.0));
-  scheme_.initialise_walls(scene_.particles, body);
+  scheme_.initialise(scene_.particles, body);
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
   build_columns();
 }

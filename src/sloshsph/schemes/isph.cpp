@@ -7,6 +7,7 @@
 
 #include "sloshsph/physics/walls.hpp"
 #include "sloshsph/sph/kernel.hpp"
+#include "sloshsph/sph/operators.hpp"
 
 namespace sloshsph {
 
@@ -57,12 +58,27 @@ void IsphScheme::update_neighbours(Particles& p) {
   diagnostics_.neighbours_rebuilt = true;
 }
 
-void IsphScheme::initialise_walls(Particles& p, Vec2 body_force) {
+void IsphScheme::initialise(Particles& p, Vec2 body_force) {
   update_neighbours(p);
   data_.resize(p.size());
   with_kernel(kernel_type_, h_, [&](const auto& k) {
     extrapolate_wall_velocity(k, p, neighbours_, p.velocity);
-    adami_wall_pressure(k, p, neighbours_, p.position, body_force, rho0_);
+    // The pressure that holds the particles as they are: the discrete PPE with a zero source
+    // (fluid at rest), its free surface and wall conditions, solved once. Starting from the
+    // analytic hydrostatic field instead would start a pressure transient (the top particles
+    // sit dp/2 below the free surface they stand for, and carry p = 0).
+    IsphData& d = data_;
+    const double w0 = k.w(0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) d.position_star[i] = p.position[i];
+    for (std::size_t i = 0; i < p.n_fluid; ++i) {
+      double wsum = w0;
+      for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) wsum += k.w(norm(p.position[i] - p.position[*it]));
+      d.free_surface[i] = p.mass * wsum < scheme_.free_surface_threshold * rho_ref_ ? 1 : 0;
+      d.ppe_source[i] = 0.0;
+    }
+    StepInput in;
+    in.body_force = body_force;
+    solve_pressure_implicit(k, p, in);
   });
 }
 
@@ -116,7 +132,6 @@ template <class K>
 void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, const StepInput& in, double nu,
                       double eta2, bool turbulence, IsphData& d) {
   const double V = p.volume;
-  const double two_nu_v = 2.0 * nu * V;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = p.position[i], ui = p.velocity[i];
@@ -128,7 +143,7 @@ void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, c
       const double r2 = norm2(rij);
       const double F = k.gradient_factor(std::sqrt(r2));
       if (F == 0.0) continue;
-      Vec2 a = (ui - p.velocity[j]) * (two_nu_v * F * r2 / (r2 + eta2));
+      Vec2 a = (ui - p.velocity[j]) * (nu * laplacian_weight(V, F, r2, eta2));
       if (turbulence) {
         const SymTensor2 tj = p.is_fluid(j) ? d.sps_stress[j] : ti;
         const double sxx = ti.xx + tj.xx, sxy = ti.xy + tj.xy, syy = ti.yy + tj.yy;
@@ -224,7 +239,6 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
   // Eq. 2.18 (Yeylaghi et al. 2016): one Jacobi sweep of the discrete PPE per step from
   // the previous pressures, p_i = (b_i + sum_j lambda_ij p_j) / sum_j lambda_ij, with
   // lambda_ij = (2 V / rho0) F_ij r^2 / (r^2 + eta^2) (eq. 2.5 with rho_i = rho_j).
-  const double c = 2.0 * p.volume / rho0_;
   const double eta2 = eta2_;
   IsphData& d = data_;
   std::vector<double>& next = d.ppe_source;  // overwritten in place: b_i is read once per i
@@ -240,7 +254,7 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
       const std::size_t j = *it;
       const Vec2 rij = ri - d.position_star[j];
       const double r2 = norm2(rij);
-      const double lambda = c * k.gradient_factor(std::sqrt(r2)) * r2 / (r2 + eta2);
+      const double lambda = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2) / rho0_;
       diag += lambda;
       const bool zero = p.is_fluid(j) && d.free_surface[j];
       off += zero ? 0.0 : lambda * p.pressure[j];
@@ -272,7 +286,6 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(neighbours_.total_pairs() + n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(nu), x0(nu);
-  const double c = 2.0 * p.volume / rho0_;
   for (std::size_t i = 0; i < n; ++i) {
     const int row = unknown[i];
     if (row < 0) continue;
@@ -286,7 +299,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
       const double r2 = norm2(rij);
       double coef;
       if (p.is_fluid(i)) {
-        coef = c * k.gradient_factor(std::sqrt(r2)) * r2 / (r2 + eta2_);
+        coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
       } else {
         coef = k.w(std::sqrt(r2));
         rhs += dot(in.body_force, rij) * rho0_ * coef;

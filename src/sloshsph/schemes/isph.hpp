@@ -51,9 +51,9 @@ class IsphScheme {
   // One time step of thesis Figure 2.1; particles are advanced in place.
   void step(Particles& particles, const StepInput& input);
 
-  // Wall pressure (eq. 2.19) and free-slip wall velocity for the current fluid state,
-  // e.g. before the first step or after a restart.
-  void initialise_walls(Particles& particles, Vec2 body_force);
+  // Before the first step: free-slip wall velocities, and the pressure (fluid and walls) that
+  // holds the fluid at rest as it is placed, from one solve of the discrete PPE.
+  void initialise(Particles& particles, Vec2 body_force);
 
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
   const NeighbourList& neighbours() const { return neighbours_; }

@@ -1,0 +1,117 @@
+#include "sloshsph/signals/white_noise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "sloshsph/signals/random.hpp"
+
+namespace sloshsph {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Adds a cos(w n dt + phi) to out[n] for every n, by rotating the phasor e^{i(w n dt + phi)};
+// the phasor is recomputed exactly every 256 samples so rounding cannot accumulate.
+void add_component(std::vector<double>& out, double amplitude, double w, double dt, double phi) {
+  const double cr = std::cos(w * dt), sr = std::sin(w * dt);
+  double c = 0.0, s = 0.0;
+  for (std::size_t n = 0; n < out.size(); ++n) {
+    if (n % 256 == 0) {
+      const double angle = w * static_cast<double>(n) * dt + phi;
+      c = std::cos(angle);
+      s = std::sin(angle);
+    }
+    out[n] += amplitude * c;
+    const double c_next = c * cr - s * sr;
+    s = s * cr + c * sr;
+    c = c_next;
+  }
+}
+
+double acceleration_gain_squared(double m, double c, double k, double f) {
+  const double w = kTwoPi * f;
+  const double re = k - m * w * w, im = c * w;
+  return w * w * w * w / (re * re + im * im);
+}
+
+}  // namespace
+
+BandLimitedNoise band_limited_white_noise(const BandLimitedNoiseSpec& spec) {
+  if (!(spec.duration > 0.0) || !(spec.dt > 0.0)) throw std::invalid_argument("white noise: duration and dt must be > 0");
+  if (!(spec.f_lo >= 0.0) || !(spec.f_hi > spec.f_lo)) throw std::invalid_argument("white noise: need 0 <= f_lo < f_hi");
+  if (!(spec.f_hi < 0.5 / spec.dt)) throw std::invalid_argument("white noise: f_hi must be below the Nyquist frequency 1/(2 dt)");
+  if (!(spec.rms >= 0.0)) throw std::invalid_argument("white noise: rms must be >= 0");
+  const double df = 1.0 / spec.duration;
+  const auto k_lo = static_cast<long long>(std::max(1.0, std::ceil(spec.f_lo / df - 1e-9)));
+  const auto k_hi = static_cast<long long>(std::floor(spec.f_hi / df + 1e-9));
+  if (k_hi < k_lo) throw std::invalid_argument("white noise: the band holds no harmonic of 1/duration (duration too short)");
+  const auto n_comp = static_cast<std::size_t>(k_hi - k_lo + 1);
+  const auto n_samples = static_cast<std::size_t>(std::ceil(spec.duration / spec.dt - 1e-9)) + 1;
+
+  std::vector<double> values(n_samples, 0.0);
+  const double amplitude = spec.rms * std::sqrt(2.0 / static_cast<double>(n_comp));
+  Xoshiro256ss rng(spec.seed);
+  for (long long k = k_lo; k <= k_hi; ++k) {
+    const double phi = kTwoPi * rng.uniform01();
+    add_component(values, amplitude, kTwoPi * static_cast<double>(k) * df, spec.dt, phi);
+  }
+  BandLimitedNoise noise;
+  noise.series = uniform_series(spec.dt, std::move(values));
+  noise.components = n_comp;
+  noise.f_lo = static_cast<double>(k_lo) * df;
+  noise.f_hi = static_cast<double>(k_hi) * df;
+  noise.psd_level = spec.rms * spec.rms / (static_cast<double>(n_comp) * df);
+  return noise;
+}
+
+SdofRandomResponse sdof_random_acceleration(double m, double c, double k, double psd_level, double f_lo, double f_hi) {
+  if (!(m > 0.0) || !(k > 0.0) || !(c > 0.0)) throw std::invalid_argument("SDOF random response: need M, C, K > 0");
+  if (!(f_hi > f_lo) || f_lo < 0.0) throw std::invalid_argument("SDOF random response: need 0 <= f_lo < f_hi");
+  const double f_n = std::sqrt(k / m) / kTwoPi;
+  const double zeta = c / (2.0 * std::sqrt(k * m));
+  // Resolve the resonance peak: its half-power bandwidth is 2 zeta f_n.
+  const double h_target = std::min((f_hi - f_lo) / 4000.0, 2.0 * zeta * f_n / 40.0);
+  auto n = static_cast<std::size_t>(std::ceil((f_hi - f_lo) / h_target));
+  n += n % 2;  // Simpson needs an even count
+  const double h = (f_hi - f_lo) / static_cast<double>(n);
+  double m0 = 0.0, m2 = 0.0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const double f = f_lo + static_cast<double>(i) * h;
+    const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    const double s = psd_level * acceleration_gain_squared(m, c, k, f);
+    m0 += w * s;
+    m2 += w * f * f * s;
+  }
+  m0 *= h / 3.0;
+  m2 *= h / 3.0;
+  SdofRandomResponse r;
+  r.sigma_acceleration = std::sqrt(m0);
+  r.upcrossing_rate = m0 > 0.0 ? std::sqrt(m2 / m0) : 0.0;
+  return r;
+}
+
+double davenport_peak_factor(double nu, double duration) {
+  const double nt = nu * duration;
+  if (!(nt > 1.0)) throw std::invalid_argument("peak factor: needs nu T > 1");
+  const double root = std::sqrt(2.0 * std::log(nt));
+  return root + 0.5772 / root;  // Davenport (1964)
+}
+
+NoiseScaling scale_noise_to_mean_peak(double m, double c, double k, double psd_level, double f_lo, double f_hi,
+                                      double target_milli_g, double duration, double upcrossing_rate) {
+  if (!(psd_level > 0.0)) throw std::invalid_argument("noise scaling: the force PSD level must be > 0");
+  if (!(target_milli_g > 0.0)) throw std::invalid_argument("noise scaling: the target peak must be > 0");
+  const SdofRandomResponse unit = sdof_random_acceleration(m, c, k, psd_level, f_lo, f_hi);
+  NoiseScaling s;
+  s.upcrossing_rate = upcrossing_rate > 0.0 ? upcrossing_rate : unit.upcrossing_rate;
+  s.peak_factor = davenport_peak_factor(s.upcrossing_rate, duration);
+  s.mean_peak = target_milli_g * 1e-3 * kStandardGravity;
+  s.force_scale = s.mean_peak / (s.peak_factor * unit.sigma_acceleration);
+  s.psd_level = s.force_scale * s.force_scale * psd_level;
+  s.sigma_acceleration = s.force_scale * unit.sigma_acceleration;
+  return s;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,185 @@
+#pragma once
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/structure/beam_element.hpp"
+#include "sloshsph/structure/beam_loads.hpp"
+
+// A slender elastic body (plate strip, gate, flap) in 2D with large deflections: a chain of
+// geometrically exact Reissner beam elements (beam_element.hpp), Rayleigh damping C = b0 M + b1 K
+// (Dincer 2019, eq. 15), HHT-alpha / Newmark time integration with Newton iterations.
+// See /work/notes/structure_results.md and docs for the equations and their validation.
+namespace sloshsph {
+
+enum class BeamSupport { kFree, kPinned, kClamped };
+enum class BeamMass { kConsistent, kLumped };
+
+// Extra per-node constraints (fixed to the initial position / rotation; zero prescribed values).
+struct BeamNodeConstraint {
+  int node = 0;
+  bool fix_x = false;
+  bool fix_y = false;
+  bool fix_rotation = false;
+};
+
+struct BeamSpec {
+  // Geometry: either `node_points` (>= 2 points, one straight element between consecutive points)
+  // or, when node_points is empty, the straight segment start -> end cut into `elements` equal elements.
+  std::vector<Vec2> node_points;
+  Vec2 start{};
+  Vec2 end{};
+  int elements = 20;
+
+  double thickness = 0.0;        // t [m], in the plane of the simulation
+  double width = 1.0;            // b [m], out of plane (1 m: loads and energies per metre)
+  double youngs_modulus = 0.0;   // E [Pa]
+  double poisson_ratio = 0.3;    // nu [-]; enters G = E / (2 (1 + nu)) and the plane-strain modulus
+  bool plane_strain = false;     // use E / (1 - nu^2) for EA and EI (wide plate in cylindrical bending)
+  double shear_correction = 5.0 / 6.0;  // k for a rectangular section (Timoshenko shear area k A)
+  double density = 0.0;          // rho_s [kg/m^3]
+
+  double rayleigh_mass = 0.0;       // b0 [1/s] in C = b0 M + b1 K (Dincer 2019 eq. 15)
+  double rayleigh_stiffness = 0.0;  // b1 [s]
+
+  BeamSupport start_support = BeamSupport::kClamped;
+  BeamSupport end_support = BeamSupport::kFree;
+  std::vector<BeamNodeConstraint> constraints;
+
+  Vec2 gravity{};                  // [m/s^2] body load, e.g. {0, -9.81}
+  BeamMass mass = BeamMass::kConsistent;
+
+  // Time integration: HHT-alpha (Hilber, Hughes & Taylor 1977) with alpha in [-1/3, 0];
+  // alpha = 0 is Newmark's average acceleration (trapezoidal) rule, no numerical damping.
+  double hht_alpha = 0.0;
+  double newton_tolerance = 1e-10;            // residual, relative to the largest force term
+  double newton_increment_tolerance = 1e-12;  // Newton correction, relative to the beam length
+  int newton_max_iterations = 30;
+};
+
+// A point of the body fixed in the material: element, position along it and offset across the
+// thickness (along the section director). Used to attach fluid boundary particles to the beam.
+struct BeamMaterialPoint {
+  int element = 0;
+  double xi = 0.0;      // 0 at the element's first node, 1 at its second
+  double offset = 0.0;  // [m] signed distance along the director (+ towards the side +1 face)
+};
+
+struct BeamSolveReport {
+  int iterations = 0;  // Newton iterations (summed over load steps / sub-steps)
+  int substeps = 1;    // load increments (static) or time sub-steps (dynamic) actually used
+};
+
+struct BeamModes {
+  std::vector<double> omega;                 // angular frequencies [rad/s], ascending
+  std::vector<Eigen::VectorXd> shapes;       // mass-normalised, 3 DOFs per node (x, y, theta)
+};
+
+class Beam {
+ public:
+  explicit Beam(const BeamSpec& spec);
+
+  const BeamSpec& spec() const { return spec_; }
+  int node_count() const { return static_cast<int>(initial_positions_.size()); }
+  int element_count() const { return node_count() - 1; }
+  SectionStiffness section() const { return section_; }
+  double mass_per_length() const { return mass_per_length_; }  // rho b t [kg/m]
+  double length() const { return total_length_; }              // undeformed length [m]
+  double time() const { return state_.time; }
+
+  // Loads with the vectors sized for this beam (all zero).
+  BeamLoads zero_loads() const;
+
+  // Static equilibrium under dead loads (and follower pressure): the load is applied in
+  // `load_steps` equal increments, each solved by Newton; an increment that does not converge is
+  // bisected. Afterwards the beam is at rest in the equilibrium. Throws RunFailure on failure.
+  BeamSolveReport static_solve(const BeamLoads& loads, int load_steps = 1);
+
+  // Advances the motion by dt with the loads acting at the end of the step (t + dt).
+  // A step whose Newton iteration fails is retried as sub-steps; throws RunFailure if that fails too.
+  BeamSolveReport step(double dt, const BeamLoads& loads);
+  BeamSolveReport step(double dt, const std::vector<Vec2>& nodal_forces, Vec2 body_acceleration = {});
+
+  // State (current configuration).
+  const std::vector<Vec2>& initial_positions() const { return initial_positions_; }
+  std::vector<Vec2> node_positions() const;
+  std::vector<Vec2> node_displacements() const;
+  std::vector<Vec2> node_velocities() const;
+  std::vector<double> node_rotations() const;          // section rotation from the initial state [rad]
+  std::vector<double> node_angular_velocities() const;  // [rad/s]
+  std::vector<Vec2> node_directors() const;             // unit vectors across the thickness (to side +1)
+
+  // The faces of the body: node positions offset by side * t/2 along the node director (side +1 or -1),
+  // their velocities, and the closed outline (face +1 first -> last node, then face -1 back).
+  std::vector<Vec2> surface(int side) const;
+  std::vector<Vec2> surface_velocities(int side) const;
+  std::vector<Vec2> outline() const;
+
+  // Material points (for fluid boundary particles): locate a point of the *undeformed* body, then
+  // follow it; forces at a material point are turned into work-consistent nodal forces and moments.
+  BeamMaterialPoint material_point(Vec2 reference_point) const;
+  Vec2 position(const BeamMaterialPoint& point) const;
+  Vec2 velocity(const BeamMaterialPoint& point) const;
+  void add_force(const BeamMaterialPoint& point, Vec2 force, BeamLoads& loads) const;
+
+  // Small vibrations about the current configuration (with its stresses): K_T phi = omega^2 M phi
+  // on the unconstrained DOFs, solved densely. `count` lowest modes.
+  BeamModes modes(int count) const;
+  std::vector<double> natural_frequencies(int count) const;  // [rad/s]
+
+  double kinetic_energy() const;       // 1/2 v^T M v [J]
+  double strain_energy() const;        // sum of element energies [J]
+  double external_work() const { return state_.external_work; }      // work of all loads since start [J]
+  double damping_dissipation() const { return state_.dissipated; }   // energy taken by Rayleigh damping [J]
+
+ private:
+  struct Assembly;
+  struct TangentFactors {
+    double stiffness = 1.0;  // on K_T + d f_damp/dq - d f_ext/dq
+    double damping = 0.0;    // on d f_damp/dv = b0 M + b1 K_material
+    double mass = 0.0;       // on M
+  };
+  void assemble(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const BeamLoads& loads, double load_factor,
+                bool with_damping, const TangentFactors& factors, Assembly& out) const;
+  bool try_step(double dt, const BeamLoads& loads, int& iterations);
+  bool newton_static(const BeamLoads& loads, int& iterations);
+  void prepare_initial_acceleration(const BeamLoads& loads);
+  bool solve_linear(const std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& rhs,
+                    Eigen::VectorXd& solution);
+  Eigen::VectorXd free_part(const Eigen::VectorXd& full) const;
+  void check_loads(const BeamLoads& loads) const;
+  double section_angle(int element, double xi) const;
+
+  BeamSpec spec_;
+  SectionStiffness section_;
+  double mass_per_length_ = 0.0;
+  double rotary_inertia_per_length_ = 0.0;
+  double total_length_ = 0.0;
+  std::vector<Vec2> initial_positions_;
+  std::vector<BeamElementGeometry> elements_;
+  std::vector<Vec2> initial_directors_;  // per node
+  std::vector<int> equation_;             // per DOF: equation index, -1 if constrained
+  int free_dofs_ = 0;
+  Eigen::SparseMatrix<double> mass_;      // full DOF mass matrix (constant)
+
+  // Everything a time step changes, grouped so that a failed step can be undone.
+  struct State {
+    Eigen::VectorXd q;  // DOFs per node: x, y (positions) and theta (rotation from the initial state)
+    Eigen::VectorXd v;
+    Eigen::VectorXd a;
+    bool acceleration_ready = false;          // a consistent with the equation of motion at t
+    Eigen::VectorXd previous_force_balance;   // f_int + f_damp - f_ext at t (HHT-alpha needs it)
+    Eigen::VectorXd previous_external;        // f_ext at t (work accounting)
+    Eigen::VectorXd previous_damping;         // f_damp at t
+    double time = 0.0;
+    double external_work = 0.0;
+    double dissipated = 0.0;
+  };
+  State state_;
+
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> solver_;
+  bool pattern_analyzed_ = false;
+};
+
+}  // namespace sloshsph

@@ -1,0 +1,174 @@
+// Case files: every key checked, errors name the file, the line and the key.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "sloshsph/core/errors.hpp"
+#include "sloshsph/io/case_reader.hpp"
+
+namespace sloshsph {
+namespace {
+
+const char* kMinimal = R"(
+[tank]
+shape = "rectangle"
+length = 0.5
+height = 0.4
+
+[fill]
+depth = 0.25
+
+[particles]
+dp = 0.01
+
+[time]
+end = 1.0
+)";
+
+// Expects an InputError whose message names `key` and contains `fragment`.
+void expect_error(const std::string& text, const std::vector<std::string>& sets, const std::string& key,
+                  const std::string& fragment) {
+  try {
+    read_case_text(text, "case.toml", sets);
+    FAIL() << "no error; expected one naming " << key;
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.key(), key) << what;
+    EXPECT_NE(what.find("'" + key + "'"), std::string::npos) << what;
+    EXPECT_NE(what.find(fragment), std::string::npos) << what;
+    EXPECT_NE(what.find("case.toml"), std::string::npos) << what;
+  }
+}
+
+TEST(CaseReader, MinimalCaseHasTheDocumentedDefaults) {
+  const CaseSpec s = read_case_text(kMinimal, "case.toml");
+  EXPECT_DOUBLE_EQ(s.fluid.density, 1000.0);
+  EXPECT_DOUBLE_EQ(s.fluid.viscosity, 1.0e-6);
+  EXPECT_DOUBLE_EQ(s.fluid.gravity, 9.81);
+  EXPECT_DOUBLE_EQ(s.particles.kernel_ratio, 1.4);
+  EXPECT_EQ(s.particles.wall_layers, 2);
+  EXPECT_DOUBLE_EQ(s.scheme.alpha, 0.01);
+  EXPECT_EQ(s.scheme.pressure, PressureSolve::explicit_update);
+  EXPECT_DOUBLE_EQ(s.scheme.free_surface_threshold, 0.9);
+  EXPECT_TRUE(s.scheme.turbulence);
+  EXPECT_DOUBLE_EQ(s.scheme.smagorinsky, 0.1);
+  EXPECT_DOUBLE_EQ(s.scheme.ct, 0.08);
+  EXPECT_DOUBLE_EQ(s.time.dt, 5.0e-4);
+  EXPECT_FALSE(s.time.adaptive);
+  EXPECT_EQ(s.excitation.type, ExcitationType::none);
+  EXPECT_EQ(s.name, "case");
+}
+
+TEST(CaseReader, DefaultCaseParses) {
+  const CaseSpec s = read_case_text(default_case_text(), "<built-in>");
+  EXPECT_EQ(s.excitation.type, ExcitationType::harmonic);
+  ASSERT_TRUE(s.excitation.beta.has_value());
+  EXPECT_DOUBLE_EQ(*s.excitation.beta, 1.0);
+  EXPECT_EQ(s.gauges.size(), 1u);
+}
+
+TEST(CaseReader, UnknownKeyIsNamedWithASuggestion) {
+  std::string text = kMinimal;
+  text.replace(text.find("dp = 0.01"), 9, "dpp = 0.01\ndp = 0.01");
+  expect_error(text, {}, "particles.dpp", "did you mean 'particles.dp'");
+}
+
+TEST(CaseReader, UnknownTableIsNamed) {
+  expect_error(std::string(kMinimal) + "\n[screenz]\nx = 1\n", {}, "screenz", "unknown key");
+}
+
+TEST(CaseReader, WrongTypeIsNamed) {
+  std::string text = kMinimal;
+  text.replace(text.find("dp = 0.01"), 9, "dp = \"fine\"");
+  expect_error(text, {}, "particles.dp", "expected a number");
+}
+
+TEST(CaseReader, NegativeSpacingIsRejected) {
+  expect_error(kMinimal, {"particles.dp=-0.005"}, "particles.dp", "positive");
+}
+
+TEST(CaseReader, FluidDeeperThanTheTank) {
+  expect_error(kMinimal, {"fill.depth=0.5"}, "fill.depth", "deeper than the tank");
+}
+
+TEST(CaseReader, MissingRequiredKey) {
+  std::string text = kMinimal;
+  text.replace(text.find("end = 1.0"), 9, "");
+  expect_error(text, {}, "time.end", "required");
+}
+
+TEST(CaseReader, HarmonicNeedsAFrequency) {
+  expect_error(std::string(kMinimal) + "\n[excitation]\ntype = \"harmonic\"\namplitude = 0.001\n", {},
+               "excitation.frequency", "needs 'frequency'");
+  expect_error(std::string(kMinimal) + "\n[excitation]\namplitude = 0.001\nbeta = 1.0\nfrequency = 1.0\n", {},
+               "excitation.beta", "not both");
+}
+
+TEST(CaseReader, ErrorsGiveTheLine) {
+  std::string text = kMinimal;
+  text.replace(text.find("dp = 0.01"), 9, "dp = -1.0");
+  try {
+    read_case_text(text, "case.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "case.toml:11") << e.what();
+  }
+}
+
+TEST(CaseReader, SyntaxErrorGivesTheLine) {
+  try {
+    read_case_text("[tank]\nlength = = 1\n", "bad.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.toml:2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CaseReader, SetOverridesAnyKey) {
+  const CaseSpec s = read_case_text(kMinimal, "case.toml",
+                                    {"time.end=2", "particles.dp=0.005", "tank.shape=rectangle", "scheme.turbulence=false"});
+  EXPECT_DOUBLE_EQ(s.time.end, 2.0);
+  EXPECT_DOUBLE_EQ(s.particles.dp, 0.005);
+  EXPECT_FALSE(s.scheme.turbulence);
+  EXPECT_EQ(s.where("time.end"), "case.toml (--set time.end)");
+}
+
+TEST(CaseReader, SetCreatesTablesAndIndexesArrays) {
+  const std::string text = std::string(kMinimal) + "\n[[probes.gauge]]\nname = \"a\"\nx = 0.1\n";
+  const CaseSpec s = read_case_text(text, "case.toml", {"probes.gauge.0.x=0.2", "excitation.amplitude=0.001",
+                                                        "excitation.frequency=0.9"});
+  ASSERT_EQ(s.gauges.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.gauges[0].x, 0.2);
+  EXPECT_EQ(s.excitation.type, ExcitationType::harmonic);
+  EXPECT_DOUBLE_EQ(*s.excitation.frequency, 0.9);
+}
+
+TEST(CaseReader, SetErrorsAreNamed) {
+  EXPECT_THROW(read_case_text(kMinimal, "case.toml", {"nonsense"}), InputError);
+  expect_error(kMinimal, {"particles.dq=1"}, "particles.dq", "unknown key");
+  try {
+    read_case_text(kMinimal, "case.toml", {"probes.gauge.3.x=1"});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--set"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CaseReader, DuplicateProbeNames) {
+  const std::string text = std::string(kMinimal) + "\n[[probes.gauge]]\nname = \"a\"\nx = 0.1\n[[probes.gauge]]\nname = \"a\"\nx = 0.2\n";
+  expect_error(text, {}, "probes.gauge.1.name", "duplicate");
+}
+
+TEST(CaseReader, TimeStepAboveTheStabilityBound) {
+  expect_error(kMinimal, {"time.dt=0.05"}, "time.dt", "stability bound");
+}
+
+TEST(CaseReader, ResolvedCaseReadsBackToTheSameSpec) {
+  const CaseSpec a = read_case_text(default_case_text(), "default.toml");
+  const CaseSpec b = read_case_text(resolved_case_toml(a), "resolved.toml");
+  EXPECT_EQ(resolved_case_toml(a).substr(resolved_case_toml(a).find("\n\n")),
+            resolved_case_toml(b).substr(resolved_case_toml(b).find("\n\n")));
+}
+
+}  // namespace
+}  // namespace sloshsph
