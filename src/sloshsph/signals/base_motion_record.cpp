@@ -39,11 +39,13 @@ BaseKinematics base_kinematics(const BaseMotionRecord& r, double t) {
   const auto& ts = r.acceleration.t;
   const auto& a = r.acceleration.value;
   if (t < ts.front()) return {};
-  if (t >= ts.back()) {
+  if (t > ts.back()) {
     const double v_end = r.velocity.back();
     return {r.displacement.back() + v_end * (t - ts.back()), v_end, 0.0};
   }
-  const std::size_t i = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin()) - 1;
+  // Interval [t_i, t_i+1] holding t (the last interval for t == t_end).
+  const std::size_t upper = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin());
+  const std::size_t i = std::min(upper, ts.size() - 1) - 1;
   const double h = ts[i + 1] - ts[i];
   const double s = t - ts[i];
   const double slope = (a[i + 1] - a[i]) / h;  // da/dt on the interval

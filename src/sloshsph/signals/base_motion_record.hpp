@@ -41,7 +41,7 @@ struct BaseMotionRecord {
 // The base is at rest at x = 0 at the first sample time. Throws std::invalid_argument on a bad series.
 BaseMotionRecord integrate_record(TimeSeries acceleration, BaselineCorrection correction);
 
-// Kinematics at time t. Before the record: at rest at x = 0. After the record: a = 0, the base
+// Kinematics at time t. Before the record: at rest at x = 0. At t_end: the last sample. After: a = 0, the base
 // keeps its final velocity (0 with the linear_velocity correction), x = x_end + v_end (t - t_end).
 // Inside: the exact piecewise polynomials described above. O(log n).
 BaseKinematics base_kinematics(const BaseMotionRecord& record, double t);

@@ -12,21 +12,37 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-// Adds a cos(w n dt + phi) to out[n] for every n, by rotating the phasor e^{i(w n dt + phi)};
-// the phasor is recomputed exactly every 256 samples so rounding cannot accumulate.
-void add_component(std::vector<double>& out, double amplitude, double w, double dt, double phi) {
-  const double cr = std::cos(w * dt), sr = std::sin(w * dt);
-  double c = 0.0, s = 0.0;
-  for (std::size_t n = 0; n < out.size(); ++n) {
-    if (n % 256 == 0) {
-      const double angle = w * static_cast<double>(n) * dt + phi;
-      c = std::cos(angle);
-      s = std::sin(angle);
+// Adds sum_j amplitude cos(w_j n dt + phi_j) to out[n] for a group of up to kGroup components, by
+// rotating each phasor e^{i(w_j n dt + phi_j)}; the phasors are recomputed exactly every 256
+// samples so rounding cannot accumulate. Several independent phasors per pass keep the CPU busy
+// (one rotation alone is a chain of dependent multiplications).
+constexpr std::size_t kGroup = 8;
+
+void add_components(std::vector<double>& out, double amplitude, const double* w, const double* phi,
+                    std::size_t count, double dt) {
+  double cr[kGroup], sr[kGroup], c[kGroup], s[kGroup];
+  for (std::size_t j = 0; j < kGroup; ++j) {
+    cr[j] = j < count ? std::cos(w[j] * dt) : 1.0;
+    sr[j] = j < count ? std::sin(w[j] * dt) : 0.0;
+    c[j] = s[j] = 0.0;
+  }
+  for (std::size_t start = 0; start < out.size(); start += 256) {
+    for (std::size_t j = 0; j < count; ++j) {
+      const double angle = w[j] * static_cast<double>(start) * dt + phi[j];
+      c[j] = std::cos(angle);
+      s[j] = std::sin(angle);
     }
-    out[n] += amplitude * c;
-    const double c_next = c * cr - s * sr;
-    s = s * cr + c * sr;
-    c = c_next;
+    const std::size_t stop = std::min(out.size(), start + 256);
+    for (std::size_t n = start; n < stop; ++n) {
+      double sum = 0.0;
+      for (std::size_t j = 0; j < kGroup; ++j) {  // unused slots hold c = s = 0
+        sum += c[j];
+        const double c_next = c[j] * cr[j] - s[j] * sr[j];
+        s[j] = s[j] * cr[j] + c[j] * sr[j];
+        c[j] = c_next;
+      }
+      out[n] += amplitude * sum;
+    }
   }
 }
 
@@ -42,7 +58,8 @@ BandLimitedNoise band_limited_white_noise(const BandLimitedNoiseSpec& spec) {
   if (!(spec.duration > 0.0) || !(spec.dt > 0.0)) throw std::invalid_argument("white noise: duration and dt must be > 0");
   if (!(spec.f_lo >= 0.0) || !(spec.f_hi > spec.f_lo)) throw std::invalid_argument("white noise: need 0 <= f_lo < f_hi");
   if (!(spec.f_hi < 0.5 / spec.dt)) throw std::invalid_argument("white noise: f_hi must be below the Nyquist frequency 1/(2 dt)");
-  if (!(spec.rms >= 0.0)) throw std::invalid_argument("white noise: rms must be >= 0");
+  if (!(spec.rms >= 0.0) || !(spec.psd_level >= 0.0))
+    throw std::invalid_argument("white noise: rms and psd_level must be >= 0");
   const double df = 1.0 / spec.duration;
   const auto k_lo = static_cast<long long>(std::max(1.0, std::ceil(spec.f_lo / df - 1e-9)));
   const auto k_hi = static_cast<long long>(std::floor(spec.f_hi / df + 1e-9));
@@ -50,19 +67,28 @@ BandLimitedNoise band_limited_white_noise(const BandLimitedNoiseSpec& spec) {
   const auto n_comp = static_cast<std::size_t>(k_hi - k_lo + 1);
   const auto n_samples = static_cast<std::size_t>(std::ceil(spec.duration / spec.dt - 1e-9)) + 1;
 
+  // The variance is S0 times the band actually covered, N df.
+  const double rms = spec.psd_level > 0.0 ? std::sqrt(spec.psd_level * static_cast<double>(n_comp) * df) : spec.rms;
   std::vector<double> values(n_samples, 0.0);
-  const double amplitude = spec.rms * std::sqrt(2.0 / static_cast<double>(n_comp));
+  const double amplitude = rms * std::sqrt(2.0 / static_cast<double>(n_comp));
   Xoshiro256ss rng(spec.seed);
-  for (long long k = k_lo; k <= k_hi; ++k) {
-    const double phi = kTwoPi * rng.uniform01();
-    add_component(values, amplitude, kTwoPi * static_cast<double>(k) * df, spec.dt, phi);
+  // Phases are drawn in order of increasing frequency, one uniform each: the signal depends only
+  // on the seed and the spec.
+  for (long long k0 = k_lo; k0 <= k_hi; k0 += static_cast<long long>(kGroup)) {
+    double w[kGroup], phi[kGroup];
+    std::size_t count = 0;
+    for (long long k = k0; k <= k_hi && count < kGroup; ++k, ++count) {
+      w[count] = kTwoPi * static_cast<double>(k) * df;
+      phi[count] = kTwoPi * rng.uniform01();
+    }
+    add_components(values, amplitude, w, phi, count, spec.dt);
   }
   BandLimitedNoise noise;
   noise.series = uniform_series(spec.dt, std::move(values));
   noise.components = n_comp;
   noise.f_lo = static_cast<double>(k_lo) * df;
   noise.f_hi = static_cast<double>(k_hi) * df;
-  noise.psd_level = spec.rms * spec.rms / (static_cast<double>(n_comp) * df);
+  noise.psd_level = rms * rms / (static_cast<double>(n_comp) * df);
   return noise;
 }
 

@@ -16,6 +16,7 @@ struct BandLimitedNoiseSpec {
   double duration = 3600.0;  // s (thesis: one hour)
   double dt = 0.01;          // s, sample interval of the output (must resolve f_hi: dt < 1 / (2 f_hi))
   double rms = 1.0;          // RMS of the signal, in the unit of the signal (N for a force)
+  double psd_level = 0.0;    // if > 0: the one-sided PSD level S0 (unit^2/Hz) instead of `rms`
 };
 
 // Sum of sinusoids with equal amplitudes and independent uniform random phases:
