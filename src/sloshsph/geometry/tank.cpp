@@ -51,8 +51,8 @@ std::string number(double v) {
 }
 
 // Appends the curve c(u), u in [u0, u1], as a chain of straight segments no longer
-// than max_segment (the first point is not appended: it is already the chain's last).
-// An even number of equal parameter steps so the parameter midpoint is a vertex.
+// than max_segment, in equal parameter steps (c(u0) is not appended: it is already the
+// chain's last point).
 template <class Curve>
 void append_curve(std::vector<Vec2>& chain, Curve&& c, double u0, double u1, double max_segment) {
   constexpr int kProbe = 64;
@@ -103,9 +103,8 @@ TankGeometry parabolic(const TankSpec& spec, const std::string& where) {
     x_start = half - 0.5 * top_width;
   }
   TankGeometry t;
-  t.wall.push_back({0.0, spec.height});
-  if (x_start > 0.0) t.wall.back() = {x_start, spec.height};
-  else append_point(t.wall, {0.0, y_end});
+  t.wall.push_back({x_start, spec.height});
+  if (x_start == 0.0) append_point(t.wall, {0.0, y_end});  // the vertical wall down to the parabola
   auto curve = [&](double x) { return Vec2{x, c * (x - half) * (x - half)}; };
   append_curve(t.wall, curve, x_start, half, curve_segment(spec));
   t.wall.back() = {half, 0.0};  // exact lowest point

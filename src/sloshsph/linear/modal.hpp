@@ -1,0 +1,50 @@
+#pragma once
+// Linear (potential-flow) sloshing modes of a tank section of any shape, by finite elements.
+//
+// Small motions of an inviscid, incompressible fluid: a velocity potential phi with
+// Laplace(phi) = 0 in the still-water section, dphi/dn = 0 on the walls, and on the still
+// free surface the combined kinematic and dynamic condition dphi/dy = (omega^2 / g) phi
+// (e.g. Faltinsen & Timokha, Sloshing, 2009, ch. 4; Ibrahim, Liquid Sloshing Dynamics, 2005).
+// The surface elevation of a mode is proportional to phi on the surface.
+//
+// Discretisation: quadratic isoparametric triangles (linear/fluid_mesh) give
+// K phi = lambda M_s phi, lambda = omega^2 / g, K the stiffness (Laplacian) matrix and M_s
+// the mass matrix of the free surface only. The interior unknowns are condensed out
+// (Schur complement S = K_ss - K_si K_ii^-1 K_is, a discrete Dirichlet-to-Neumann map) and
+// the small dense symmetric problem S v = lambda M_s v is solved with Eigen.
+#include <vector>
+
+#include "sloshsph/geometry/tank.hpp"
+
+namespace sloshsph {
+
+struct SloshingMode {
+  double omega = 0.0;      // rad/s, natural angular frequency
+  double frequency = 0.0;  // Hz
+  // Mode shape of the free surface: x of the surface nodes (left to right) and the
+  // elevation there, scaled to max |eta| = 1, positive at the left wall.
+  std::vector<double> surface_x, surface_eta;
+};
+
+struct ModalOptions {
+  // Elements per min(surface width, 4 x max depth): the element size is that length
+  // divided by `resolution` (but never more than 4 x resolution elements along the surface).
+  // 16 gives relative errors below 1e-5 on omega_1 and 1e-3 on omega_3 for the thesis's
+  // tanks (rectangle, V, parabola, circle; see tests/unit/linear), about 1e-4 on omega_1
+  // when a wall corner lies just below the surface; the error falls as resolution^-4 for
+  // smooth sections.
+  int resolution = 16;
+};
+
+// The first `count` sloshing modes (fewer if the mesh has fewer), in increasing frequency,
+// of the section of `tank` filled to `depth` (m above tank.y_bottom). The constant
+// potential (omega = 0) is not a mode and is not returned. For a symmetric tank mode 1 is
+// the first antisymmetric one. Throws InputError (fill.depth) if the still-water region
+// is not a single pool below the top of the walls (see still_water_polygon).
+std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth, double gravity, int count,
+                                         const ModalOptions& options = {});
+
+// omega_1 (rad/s), the lowest sloshing frequency.
+double first_sloshing_omega(const TankGeometry& tank, double depth, double gravity, const ModalOptions& options = {});
+
+}  // namespace sloshsph
