@@ -4,17 +4,35 @@
 #include <vector>
 
 #include "sloshsph/core/vec2.hpp"
+#include "sloshsph/structure/banded_lu.hpp"
 #include "sloshsph/structure/beam_element.hpp"
 #include "sloshsph/structure/beam_loads.hpp"
 
 // A slender elastic body (plate strip, gate, flap) in 2D with large deflections: a chain of
 // geometrically exact Reissner beam elements (beam_element.hpp), Rayleigh damping C = b0 M + b1 K
-// (Dincer 2019, eq. 15), HHT-alpha / Newmark time integration with Newton iterations.
-// See /work/notes/structure_results.md and docs for the equations and their validation.
+// (Dincer 2019, eq. 15), implicit time integration with Newton iterations: an energy-conserving
+// midpoint rule (default) or HHT-alpha / Newmark. Units SI; with the default width b = 1 m, forces,
+// masses and energies are per metre of the out-of-plane width. The solver works in the frame of the
+// support (the tank frame): base motion enters as BeamLoads::body_acceleration.
+//
+// Typical coupling loop (fluid boundary particles attached to material points of the body):
+//   Beam beam(spec);                                    // undeformed body
+//   BeamMaterialPoint p = beam.material_point(x0);      // once per boundary particle, x0 on a face
+//   each step: BeamLoads loads = beam.zero_loads();
+//              beam.add_force(p, fluid_force_on_particle, loads);   // for every particle
+//              loads.body_acceleration = -tank_acceleration;
+//              beam.step(dt, loads);
+//              x = beam.position(p); v = beam.velocity(p);          // move the particles
 namespace sloshsph {
 
 enum class BeamSupport { kFree, kPinned, kClamped };
 enum class BeamMass { kConsistent, kLumped };
+// kEnergyConserving: implicit midpoint / average-acceleration rule with a discrete-gradient internal force
+//   (beam_element.hpp): the discrete energy balance is exact, so the nonlinear motion cannot blow up.
+//   Identical to Newmark's average acceleration rule for linear problems. The default.
+// kHHT: Hilber-Hughes-Taylor alpha method (hht_alpha in [-1/3, 0]; 0 is plain Newmark average
+//   acceleration), numerical damping of the high modes for alpha < 0.
+enum class BeamIntegrator { kEnergyConserving, kHHT };
 
 // Extra per-node constraints (fixed to the initial position / rotation; zero prescribed values).
 struct BeamNodeConstraint {
@@ -48,11 +66,12 @@ struct BeamSpec {
   std::vector<BeamNodeConstraint> constraints;
 
   Vec2 gravity{};                  // [m/s^2] body load, e.g. {0, -9.81}
-  BeamMass mass = BeamMass::kConsistent;
+  // Lumped is the default: with these reduced-integration elements it gives the more accurate bending
+  // frequencies (see structure_results.md) and a diagonal mass.
+  BeamMass mass = BeamMass::kLumped;
 
-  // Time integration: HHT-alpha (Hilber, Hughes & Taylor 1977) with alpha in [-1/3, 0];
-  // alpha = 0 is Newmark's average acceleration (trapezoidal) rule, no numerical damping.
-  double hht_alpha = 0.0;
+  BeamIntegrator integrator = BeamIntegrator::kEnergyConserving;
+  double hht_alpha = 0.0;  // kHHT only: in [-1/3, 0] (Hilber, Hughes & Taylor 1977)
   double newton_tolerance = 1e-10;            // residual, relative to the largest force term
   double newton_increment_tolerance = 1e-12;  // Newton correction, relative to the beam length
   int newton_max_iterations = 30;
@@ -124,7 +143,9 @@ class Beam {
   void add_force(const BeamMaterialPoint& point, Vec2 force, BeamLoads& loads) const;
 
   // Small vibrations about the current configuration (with its stresses): K_T phi = omega^2 M phi
-  // on the unconstrained DOFs, solved densely. `count` lowest modes.
+  // on the unconstrained DOFs, solved densely (fine up to a few hundred elements). `count` lowest
+  // modes; follower-load stiffness is not included. A negative value -sqrt(|lambda|) flags an
+  // unstable (buckled) state.
   BeamModes modes(int count) const;
   std::vector<double> natural_frequencies(int count) const;  // [rad/s]
 
@@ -135,15 +156,24 @@ class Beam {
 
  private:
   struct Assembly;
-  struct TangentFactors {
+  struct TangentFactors {  // effective tangent of the static / HHT residual
     double stiffness = 1.0;  // on K_T + d f_damp/dq - d f_ext/dq
     double damping = 0.0;    // on d f_damp/dv = b0 M + b1 K_material
     double mass = 0.0;       // on M
   };
   void assemble(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const BeamLoads& loads, double load_factor,
                 bool with_damping, const TangentFactors& factors, Assembly& out) const;
+  void assemble_midpoint(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, const BeamLoads& loads, double dt,
+                         Assembly& out) const;
+  void add_pressure_loads(int element, const Eigen::VectorXd& q, const BeamLoads& loads, double load_factor,
+                          double tangent_factor, BeamElementMatrix& k_eff, Eigen::VectorXd& external) const;
+  void add_nodal_and_body_loads(const BeamLoads& loads, double load_factor, Eigen::VectorXd& external) const;
+  void scatter(int element, const BeamElementMatrix& k_eff, std::vector<Eigen::Triplet<double>>& triplets) const;
+  BeamElementState element_state(const Eigen::VectorXd& q, int element) const;
   bool try_step(double dt, const BeamLoads& loads, int& iterations);
-  bool newton_static(const BeamLoads& loads, int& iterations);
+  bool try_step_hht(double dt, const BeamLoads& loads, int& iterations);
+  bool try_step_midpoint(double dt, const BeamLoads& loads, int& iterations);
+  Eigen::VectorXd expand(const Eigen::VectorXd& free) const;
   void prepare_initial_acceleration(const BeamLoads& loads);
   bool solve_linear(const std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& rhs,
                     Eigen::VectorXd& solution);
@@ -165,7 +195,7 @@ class Beam {
 
   // Everything a time step changes, grouped so that a failed step can be undone.
   struct State {
-    Eigen::VectorXd q;  // DOFs per node: x, y (positions) and theta (rotation from the initial state)
+    Eigen::VectorXd q;  // DOFs per node: displacement x, y from the initial position, rotation theta
     Eigen::VectorXd v;
     Eigen::VectorXd a;
     bool acceleration_ready = false;          // a consistent with the equation of motion at t
@@ -178,8 +208,7 @@ class Beam {
   };
   State state_;
 
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> solver_;
-  bool pattern_analyzed_ = false;
+  BandedLu solver_;  // Newton systems on the free DOFs (bandwidth of one element)
 };
 
 }  // namespace sloshsph
