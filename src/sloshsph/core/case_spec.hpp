@@ -54,6 +54,43 @@ struct SchemeSpec {
   double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual
   int solver_max_iterations = 1000;      // implicit PPE
   double neighbour_skin = 0.2;           // Verlet skin as a fraction of the support radius 2h
+  WcsphSpec wcsph;                       // used when type = "wcsph"
+};
+
+// Weakly compressible delta-SPH (Dincer 2019 eqs. 5-13) with the options of Shao et al. 2012.
+enum class WallTreatment { adami, repulsive };
+enum class Integrator { symplectic, leapfrog };
+enum class WcsphTurbulence { none, sps, smagorinsky };
+
+struct WcsphSpec {
+  double sound_speed = 0.0;          // m/s; 0: from the Morris et al. estimate (Shao eq. 9, Dincer eq. 13)
+  double max_density_variation = 0.01;  // Delta rho / rho0 allowed by that estimate
+  double delta = 0.1;                // delta-SPH density diffusion coefficient (Dincer eq. 5)
+  double artificial_viscosity = 0.02;  // alpha of the artificial viscosity (Dincer eq. 6); 0: laminar viscosity
+  double xsph = 0.0;                 // XSPH epsilon (Dincer eq. 11 uses 0.05)
+  bool kernel_gradient_correction = false;  // Shao eqs. 16-17
+  int shepard_interval = 0;          // steps between Shepard density re-normalisations (Shao eqs. 10-11); 0: off
+  WcsphTurbulence turbulence = WcsphTurbulence::none;  // Shao eqs. 21-24 (Smagorinsky, Cs = 0.12)
+  double smagorinsky = 0.12;
+  WallTreatment walls = WallTreatment::adami;  // or Shao's coupled dynamic solid boundary (eqs. 25-30)
+  Integrator integrator = Integrator::symplectic;
+  double cfl = 0.2;                  // dt = cfl * h / (c0 + u_max), with viscous and force bounds
+};
+
+// A porous element (screen, baffle, perforated floor) or an explicit slat screen (thesis 2.5, 4.2.2).
+enum class ScreenModel { ergun, morison, explicit_slats };
+
+struct ScreenSpec {
+  std::string name;
+  Vec2 from, to;                 // m, the element's centre line (a vertical screen: x, bottom to top)
+  double solidity = 0.0;         // S = 1 - porosity (thesis eq. 2.23)
+  double slat_height = 0.0;      // m, explicit slats (and S = h_slat / (h_slat + h_gap) if given)
+  double slat_gap = 0.0;         // m
+  double thickness = 0.001;      // m, t_sc
+  ScreenModel model = ScreenModel::ergun;
+  double spacing = 0.0;          // m, screen particle spacing dp_sc (0: dp)
+  double interaction_radius = 0.0;  // m, kernel smoothing length h_sc of the screen (0: 2.5 h)
+  double loss_coefficient = 0.0;    // Morison: C_l (0: from the solidity, docs/physics.md)
 };
 
 struct TimeSpec {
@@ -61,6 +98,7 @@ struct TimeSpec {
   double dt = 5.0e-4;        // s, fixed step (or the ceiling of an adaptive step)
   bool adaptive = false;     // CFL-adaptive step, thesis 2.6.3.2
   double cfl = 0.1;          // factor of dt <= cfl * min(dp / u_max, dp^2 / nu)
+  double settle = 0.0;       // s, damped settling at rest before t = 0 (0: none)
 };
 
 enum class ExcitationType { none, harmonic };
@@ -110,6 +148,7 @@ struct CaseSpec {
   ExcitationSpec excitation;
   std::vector<GaugeSpec> gauges;
   std::vector<PressureProbeSpec> pressure_probes;
+  std::vector<ScreenSpec> screens;
   OutputSpec output;
   RunSpec run;
 

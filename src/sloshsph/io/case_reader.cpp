@@ -72,6 +72,7 @@ TimeSpec read_time(TableReader& r) {
   t.dt = r.positive("dt", t.dt);
   t.adaptive = r.boolean("adaptive", t.adaptive);
   t.cfl = r.in_range("cfl", t.cfl, 1e-3, 0.5);
+  t.settle = r.non_negative("settle", t.settle);
   r.finish();
   return t;
 }
@@ -311,7 +312,8 @@ std::string resolved_case_toml(const CaseSpec& s) {
                                     {"solver_tolerance", s.scheme.solver_tolerance},
                                     {"solver_max_iterations", s.scheme.solver_max_iterations},
                                     {"neighbour_skin", s.scheme.neighbour_skin}});
-  root.insert("time", toml::table{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl}});
+  root.insert("time", toml::table{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl},
+                                  {"settle", s.time.settle}});
   if (s.excitation.type == ExcitationType::harmonic) {
     toml::table e{{"type", "harmonic"}, {"amplitude", s.excitation.amplitude}, {"ramp", s.excitation.ramp},
                   {"phase", s.excitation.phase}, {"stop", s.excitation.stop}};

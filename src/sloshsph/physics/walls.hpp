@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "sloshsph/core/particles.hpp"
+#include "sloshsph/physics/frame.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 
 namespace sloshsph {
@@ -32,13 +33,13 @@ void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourLi
 
 // Thesis eq. 2.19 (Adami et al. 2012, eq. 27) with the frame acceleration:
 //   p_w = (sum_f p_f W_wf + (g - a) . sum_f rho_f (r_w - r_f) W_wf) / sum_f W_wf,
-// where body_force = g - a is the tank-frame body force. `position` gives the fluid positions to
+// where g - a is the tank-frame body force at the wall particle (frame.at(r_w, 0)). `position` gives the fluid positions to
 // use (r* inside a step). A wall particle with no fluid around it gets p = 0, and the result
 // is clipped at 0: above the free surface the extrapolation goes negative, and a negative wall
 // pressure would pull surface particles up along the wall (the fluid mirrored there is air, p = 0).
 template <class K>
 void adami_wall_pressure(const K& k, Particles& p, const NeighbourList& nl, const std::vector<Vec2>& position,
-                         Vec2 body_force, double rho0) {
+                         const FrameForce& frame, double rho0) {
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
     const Vec2 rw = p.position[w];
@@ -51,7 +52,7 @@ void adami_wall_pressure(const K& k, Particles& p, const NeighbourList& nl, cons
       rsum += W * rwf;
       wsum += W;
     }
-    p.pressure[w] = wsum > 0.0 ? std::max(0.0, (psum + rho0 * dot(body_force, rsum)) / wsum) : 0.0;
+    p.pressure[w] = wsum > 0.0 ? std::max(0.0, (psum + rho0 * dot(frame.at(rw, Vec2{}), rsum)) / wsum) : 0.0;
   }
 }
 

@@ -62,6 +62,7 @@ class Simulation {
 
  private:
   double next_dt() const;
+  void settle();
   void check_state();
   void remove_leaked();
   void build_columns();

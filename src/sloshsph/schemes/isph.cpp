@@ -58,7 +58,7 @@ void IsphScheme::update_neighbours(Particles& p) {
   diagnostics_.neighbours_rebuilt = true;
 }
 
-void IsphScheme::initialise(Particles& p, Vec2 body_force) {
+void IsphScheme::initialise(Particles& p, const FrameForce& frame) {
   update_neighbours(p);
   data_.resize(p.size());
   with_kernel(kernel_type_, h_, [&](const auto& k) {
@@ -77,7 +77,7 @@ void IsphScheme::initialise(Particles& p, Vec2 body_force) {
       d.ppe_source[i] = 0.0;
     }
     StepInput in;
-    in.body_force = body_force;
+    in.frame = frame;
     solve_pressure_implicit(k, p, in);
   });
 }
@@ -154,7 +154,7 @@ void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, c
     }
     d.wall_acceleration[i] = a_wall;
     d.velocity_old[i] = ui;
-    d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.body_force);
+    d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.frame.at(ri, ui));
   }
 }
 
@@ -185,7 +185,6 @@ template <class K>
 void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, const StepInput& in,
                             double alpha, double rho_ref, double threshold, IsphData& d) {
   const double V = p.volume, m = p.mass, w0 = k.w(0.0), dt = in.dt;
-  const Vec2 wall_increment = dt * in.body_force;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = d.position_star[i], ui = d.velocity_star[i];
@@ -195,7 +194,7 @@ void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, c
       const Vec2 rij = ri - d.position_star[j];
       const double r = norm(rij);
       wsum += k.w(r);
-      const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j] : p.velocity[j] + wall_increment;
+      const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j] : p.velocity[j] + dt * in.frame.at(p.position[j], Vec2{});
       div += V * k.gradient_factor(r) * dot(uj - ui, rij);
     }
     const double rho_star = m * wsum;
@@ -263,7 +262,7 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = next[i];
-  adami_wall_pressure(k, p, neighbours_, d.position_star, in.body_force, rho0_);
+  adami_wall_pressure(k, p, neighbours_, d.position_star, in.frame, rho0_);
   diagnostics_.solver_iterations = 1;
   diagnostics_.solver_residual = 0.0;
 }
@@ -302,7 +301,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
         coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
       } else {
         coef = k.w(std::sqrt(r2));
-        rhs += dot(in.body_force, rij) * rho0_ * coef;
+        rhs += dot(in.frame.at(ri, Vec2{}), rij) * rho0_ * coef;
       }
       diag += coef;
       if (unknown[j] >= 0) triplets.emplace_back(row, unknown[j], -coef);
@@ -323,7 +322,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
   for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = unknown[i] >= 0 ? x[unknown[i]] : 0.0;
   // Wall pressures from the solved fluid, with the clipping at 0 of adami_wall_pressure
   // (the linear system cannot hold the clip; it matters only near the free surface).
-  adami_wall_pressure(k, p, neighbours_, d.position_star, in.body_force, rho0_);
+  adami_wall_pressure(k, p, neighbours_, d.position_star, in.frame, rho0_);
 }
 
 template <class K>

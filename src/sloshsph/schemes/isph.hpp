@@ -11,6 +11,7 @@
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/core/vec2.hpp"
+#include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 
 namespace sloshsph {
@@ -30,20 +31,6 @@ struct IsphData {
   void resize(std::size_t n);
 };
 
-struct StepInput {
-  double dt = 0.0;     // s
-  Vec2 body_force;     // m/s^2, gravity and frame forces in the tank frame
-};
-
-struct StepDiagnostics {
-  Vec2 wall_force;               // N/m: total force of the walls on the fluid (base shear, thesis eq. 4.21)
-  double max_speed = 0.0;        // m/s, fluid, after the step
-  std::size_t free_surface = 0;  // particles flagged free surface this step
-  int solver_iterations = 0;     // implicit PPE (explicit: sweeps)
-  double solver_residual = 0.0;  // implicit PPE, relative
-  bool neighbours_rebuilt = false;
-};
-
 class IsphScheme {
  public:
   IsphScheme(const CaseSpec& spec, double h);
@@ -53,7 +40,7 @@ class IsphScheme {
 
   // Before the first step: free-slip wall velocities, and the pressure (fluid and walls) that
   // holds the fluid at rest as it is placed, from one solve of the discrete PPE.
-  void initialise(Particles& particles, Vec2 body_force);
+  void initialise(Particles& particles, const FrameForce& frame);
 
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
   const NeighbourList& neighbours() const { return neighbours_; }
