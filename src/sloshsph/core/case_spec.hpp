@@ -41,22 +41,6 @@ struct ParticleSpec {
   KernelType kernel = KernelType::wendland_c2;
 };
 
-enum class PressureSolve { explicit_update, implicit_krylov };
-
-struct SchemeSpec {
-  std::string type = "isph";
-  double alpha = 0.01;                   // PPE blending factor (thesis eq. 2.13)
-  PressureSolve pressure = PressureSolve::explicit_update;
-  double free_surface_threshold = 0.9;   // rho_n / rho_0 below which p = 0 (thesis eq. 2.20)
-  bool turbulence = true;                // SPS (thesis eqs. 2.8, 2.9, 2.17)
-  double smagorinsky = 0.1;              // Cs
-  double ct = 0.08;                      // Ct, for k_t
-  double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual
-  int solver_max_iterations = 1000;      // implicit PPE
-  double neighbour_skin = 0.2;           // Verlet skin as a fraction of the support radius 2h
-  WcsphSpec wcsph;                       // used when type = "wcsph"
-};
-
 // Weakly compressible delta-SPH (Dincer 2019 eqs. 5-13) with the options of Shao et al. 2012.
 enum class WallTreatment { adami, repulsive };
 enum class Integrator { symplectic, leapfrog };
@@ -75,6 +59,22 @@ struct WcsphSpec {
   WallTreatment walls = WallTreatment::adami;  // or Shao's coupled dynamic solid boundary (eqs. 25-30)
   Integrator integrator = Integrator::symplectic;
   double cfl = 0.2;                  // dt = cfl * h / (c0 + u_max), with viscous and force bounds
+};
+
+enum class PressureSolve { explicit_update, implicit_krylov };
+
+struct SchemeSpec {
+  std::string type = "isph";
+  double alpha = 0.01;                   // PPE blending factor (thesis eq. 2.13)
+  PressureSolve pressure = PressureSolve::explicit_update;
+  double free_surface_threshold = 0.9;   // rho_n / rho_0 below which p = 0 (thesis eq. 2.20)
+  bool turbulence = true;                // SPS (thesis eqs. 2.8, 2.9, 2.17)
+  double smagorinsky = 0.1;              // Cs
+  double ct = 0.08;                      // Ct, for k_t
+  double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual
+  int solver_max_iterations = 1000;      // implicit PPE
+  double neighbour_skin = 0.2;           // Verlet skin as a fraction of the support radius 2h
+  WcsphSpec wcsph;                       // used when type = "wcsph"
 };
 
 // A porous element (screen, baffle, perforated floor) or an explicit slat screen (thesis 2.5, 4.2.2).
