@@ -1,0 +1,245 @@
+#include "sloshsph/physics/porous.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/screens.hpp"
+#include "sloshsph/sph/kernel.hpp"
+
+namespace sloshsph {
+
+// ---------------------------------------------------------------------------------------
+// Closed forms.
+
+double kozeny_carman_permeability(double porosity, double diameter) {
+  // Thesis eq. 2.22, phi_s = 1.
+  const double n = porosity;
+  return n * n * n * diameter * diameter / (150.0 * (1.0 - n) * (1.0 - n));
+}
+
+Vec2 ergun_pressure_gradient(double mu, double rho, double permeability, double porosity, Vec2 velocity) {
+  // Thesis eq. 2.21: viscous (Darcy) term + inertial (Forchheimer) term.
+  const double viscous = mu / permeability;
+  const double inertial = 1.75 / std::sqrt(150.0) * rho / (std::sqrt(permeability) * std::pow(porosity, 1.5));
+  return (viscous + inertial * norm(velocity)) * velocity;
+}
+
+double slat_screen_loss_coefficient(double solidity) {
+  // Baines & Peterson (1951) as used by Tait et al. (2005) for slat screens.
+  const double s = solidity;
+  const double contraction = 0.405 * std::exp(-std::numbers::pi * s) + 0.595;
+  const double a = 1.0 / (contraction * (1.0 - s)) - 1.0;
+  return a * a;
+}
+
+Vec2 morison_pressure_drop(double rho, double loss_coefficient, Vec2 velocity) {
+  // Drag term of Morison's equation per unit area (McNamara et al. 2021).
+  return (0.5 * rho * loss_coefficient * norm(velocity)) * velocity;
+}
+
+// ---------------------------------------------------------------------------------------
+// Screen particles.
+
+double ScreenParticles::max_support() const {
+  double s = 0.0;
+  for (const ScreenElement& e : elements)
+    if (e.count > 0) s = std::max(s, 2.0 * e.smoothing_length);
+  return s;
+}
+
+namespace {
+
+// sum_f V W_jf over an unbounded fluid lattice of spacing dp, at a lattice node: the value of
+// the kernel sum of a screen particle deep in undisturbed fluid (1 up to the lattice error).
+double lattice_weight(double h_sc, double dp) {
+  const WendlandC2 k(h_sc);
+  const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+  double sum = 0.0;
+  for (int a = -n; a <= n; ++a)
+    for (int b = -n; b <= n; ++b) sum += k.w(dp * std::sqrt(double(a * a + b * b)));
+  return sum * dp * dp;
+}
+
+void check_non_negative(double v, const std::string& where, const std::string& key) {
+  if (!(v >= 0.0)) throw InputError(where, key, "must not be negative");
+}
+
+}  // namespace
+
+ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, double dp, double h,
+                                      const TankGeometry& tank, const std::string& where) {
+  if (!(dp > 0.0)) throw InputError(where, "particles.dp", "must be positive");
+  ScreenParticles out;
+  for (std::size_t index = 0; index < specs.size(); ++index) {
+    const ScreenSpec& spec = specs[index];
+    const std::string key = "screens." + std::to_string(index);
+    check_non_negative(spec.spacing, where, key + ".spacing");
+    check_non_negative(spec.interaction_radius, where, key + ".interaction_radius");
+    check_non_negative(spec.loss_coefficient, where, key + ".loss_coefficient");
+
+    ScreenElement e;
+    e.name = spec.name;
+    e.model = spec.model;
+    e.solidity = element_solidity(spec, where, key);
+    e.porosity = 1.0 - e.solidity;
+    e.thickness = spec.thickness;
+    e.nominal_spacing = spec.spacing > 0.0 ? spec.spacing : dp;
+    e.smoothing_length = spec.interaction_radius > 0.0 ? spec.interaction_radius : 2.5 * h;  // thesis 2.5.3
+    const ClippedLine line = clip_to_section(tank, spec.from, spec.to, where, key);
+    e.from = line.from;
+    e.to = line.to;
+    e.length = line.length;
+    e.normal = perp(line.direction());
+    e.first = out.position.size();
+
+    if (spec.model == ScreenModel::explicit_slats) {  // rigid walls, geometry/screens
+      out.elements.push_back(e);
+      continue;
+    }
+    const bool needs_solidity = spec.model == ScreenModel::ergun || spec.loss_coefficient == 0.0;
+    if (needs_solidity && !(e.solidity > 0.0))
+      throw InputError(where, key + ".solidity",
+                       "the element needs a solidity S in (0, 1), or slat_height and slat_gap" +
+                           std::string(spec.model == ScreenModel::morison ? ", or a loss_coefficient" : ""));
+    if (spec.model == ScreenModel::ergun) {
+      if (!(spec.thickness > 0.0)) throw InputError(where, key + ".thickness", "must be positive");
+      e.permeability = kozeny_carman_permeability(e.porosity, e.nominal_spacing);  // D_c = dp_sc, thesis 2.5.2
+    } else {
+      e.loss_coefficient =
+          spec.loss_coefficient > 0.0 ? spec.loss_coefficient : slat_screen_loss_coefficient(e.solidity);
+    }
+    e.undisturbed_weight = lattice_weight(e.smoothing_length, dp);
+
+    // Equal spacing <= dp_sc; a length that is a whole number of dp_sc (to round-off) keeps dp_sc.
+    const std::size_t n =
+        std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(e.length / e.nominal_spacing - 1e-9)));
+    e.spacing = e.length / static_cast<double>(n);
+    e.count = n;
+    const Vec2 along = line.direction();
+    for (std::size_t k = 0; k < n; ++k) {
+      out.position.push_back(e.from + ((static_cast<double>(k) + 0.5) * e.spacing) * along);
+      out.element.push_back(static_cast<std::uint32_t>(index));
+    }
+    out.elements.push_back(e);
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// The drag stage.
+
+namespace {
+
+Vec2 particle_drag(const ScreenElement& e, Vec2 u, double rho, double mu) {
+  if (e.model == ScreenModel::ergun)  // eq. 2.25: (dP/L)(U) * t_sc * A_p
+    return ergun_pressure_gradient(mu, rho, e.permeability, e.porosity, u) * (e.thickness * e.spacing);
+  // Morison: only the component through the screen; |u_n| u_n n does not depend on the sign of n.
+  const double un = dot(u, e.normal);
+  return (0.5 * rho * e.loss_coefficient * std::abs(un) * un * e.spacing) * e.normal;
+}
+
+}  // namespace
+
+void screen_drag(const ScreenParticles& screens, const Particles& p, const std::vector<Vec2>& velocity, double rho,
+                 double mu, ScreenDragWork& work, std::vector<Vec2>& acceleration_out,
+                 std::vector<ScreenElementLoad>& loads_out) {
+  const std::size_t ns = screens.size(), nf = p.n_fluid, n = p.size();
+  acceleration_out.assign(nf, Vec2{});
+  loads_out.assign(screens.elements.size(), ScreenElementLoad{});
+  work.velocity.assign(ns, Vec2{});
+  work.drag.assign(ns, Vec2{});
+  work.fluid_weight.assign(ns, 0.0);
+  work.wet_weight.assign(ns, 0.0);
+  work.wet.assign(ns, 0);
+  if (ns == 0 || nf == 0) return;
+
+  const double radius = screens.max_support();
+  const double V = p.volume;
+
+  // (a) Per screen particle: kernel sums over the fluid (and walls, for the wet test), drag.
+  work.particle_grid.build(p.position, 0, n, radius);
+#pragma omp parallel for schedule(static)
+  for (std::size_t j = 0; j < ns; ++j) {
+    const ScreenElement& e = screens.elements[screens.element[j]];
+    const WendlandC2 k(e.smoothing_length);
+    const double support2 = k.support() * k.support();
+    const Vec2 rj = screens.position[j];
+    Vec2 u;
+    double s = 0.0, fluid = 0.0, wall = 0.0;
+    work.particle_grid.for_each_candidate(rj, k.support(), [&](std::uint32_t f) {
+      const double r2 = norm2(rj - p.position[f]);
+      if (r2 >= support2) return;
+      const double w = k.w(std::sqrt(r2));
+      if (f < nf) {
+        u += (V * w) * velocity[f];  // eq. 2.26
+        s += w;                      // eq. 2.27 denominator
+        fluid += V * w;
+      } else {
+        wall += V * w;
+      }
+    });
+    const double uncovered = e.undisturbed_weight - wall;
+    const bool wet = fluid > 0.0 && fluid >= screens.wet_fraction * std::max(0.0, uncovered);
+    if (screens.shepard_velocity && fluid > 0.0) u = u / fluid;
+    work.velocity[j] = u;
+    work.fluid_weight[j] = s;
+    work.wet_weight[j] = fluid;
+    work.wet[j] = wet ? 1 : 0;
+    work.drag[j] = wet ? particle_drag(e, u, rho, mu) : Vec2{};
+  }
+
+  // (b) Per fluid particle in the interface zone: its share of each screen particle's drag.
+  work.screen_grid.build(screens.position, 0, ns, radius);
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  Vec2 hi{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+  for (const Vec2& q : screens.position) {
+    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+  }
+  const double inv_m = 1.0 / p.mass;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Vec2 ri = p.position[i];
+    if (ri.x < lo.x - radius || ri.x > hi.x + radius || ri.y < lo.y - radius || ri.y > hi.y + radius) continue;
+    Vec2 f;
+    work.screen_grid.for_each_candidate(ri, radius, [&](std::uint32_t j) {
+      if (!work.wet[j] || work.fluid_weight[j] <= 0.0) return;
+      const ScreenElement& e = screens.elements[screens.element[j]];
+      const WendlandC2 k(e.smoothing_length);
+      // Same expression as in (a), so that exactly the pairs of S_j share F_d,j.
+      const double r2 = norm2(screens.position[j] - ri);
+      if (r2 >= k.support() * k.support()) return;
+      f += work.drag[j] * (k.w(std::sqrt(r2)) / work.fluid_weight[j]);  // eq. 2.27
+    });
+    acceleration_out[i] = -inv_m * f;  // eq. 2.28
+  }
+
+  // Per element, in particle order (deterministic).
+  for (std::size_t j = 0; j < ns; ++j) {
+    ScreenElementLoad& l = loads_out[screens.element[j]];
+    l.force_on_fluid -= work.drag[j];
+    if (work.wet[j]) {
+      l.mean_velocity += work.velocity[j];
+      ++l.wet_particles;
+    }
+  }
+  for (std::size_t e = 0; e < loads_out.size(); ++e) {
+    ScreenElementLoad& l = loads_out[e];
+    if (l.wet_particles > 0) l.mean_velocity = l.mean_velocity / static_cast<double>(l.wet_particles);
+    l.wet_length = static_cast<double>(l.wet_particles) * screens.elements[e].spacing;
+  }
+}
+
+void screen_drag(const ScreenParticles& screens, const Particles& p, double rho, double mu,
+                 std::vector<Vec2>& acceleration_out, std::vector<Vec2>& force_per_element_out) {
+  ScreenDragWork work;
+  std::vector<ScreenElementLoad> loads;
+  screen_drag(screens, p, p.velocity, rho, mu, work, acceleration_out, loads);
+  force_per_element_out.resize(loads.size());
+  for (std::size_t e = 0; e < loads.size(); ++e) force_per_element_out[e] = loads[e].force_on_fluid;
+}
+
+}  // namespace sloshsph
