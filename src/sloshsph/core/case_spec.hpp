@@ -63,11 +63,18 @@ struct WcsphSpec {
 
 enum class PressureSolve { explicit_update, implicit_krylov };
 
+// How the free surface enters the pressure Poisson equation.
+//  thesis: p = 0 on the particles whose kernel-summed density is below the threshold (eq. 2.20).
+//  air:    p = 0 in the air that fills the truncated part of each kernel, so surface particles
+//          carry the small pressure of their depth (docs/physics.md, "Free surface").
+enum class FreeSurfaceModel { air, thesis };
+
 struct SchemeSpec {
   std::string type = "isph";
   double alpha = 0.01;                   // PPE blending factor (thesis eq. 2.13)
-  PressureSolve pressure = PressureSolve::explicit_update;
-  double free_surface_threshold = 0.9;   // rho_n / rho_0 below which p = 0 (thesis eq. 2.20)
+  PressureSolve pressure = PressureSolve::implicit_krylov;
+  FreeSurfaceModel free_surface = FreeSurfaceModel::air;  // default: air (implicit), thesis (explicit)
+  double free_surface_threshold = 0.9;   // rho_n / rho_0 below which a particle is free surface (eq. 2.20)
   bool turbulence = true;                // SPS (thesis eqs. 2.8, 2.9, 2.17)
   double smagorinsky = 0.1;              // Cs
   double ct = 0.08;                      // Ct, for k_t

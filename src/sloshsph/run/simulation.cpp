@@ -117,8 +117,8 @@ void Simulation::step() {
   time_ = spec_.time.adaptive ? time_ + dt : std::min(steps_ * spec_.time.dt, spec_.time.end);
   last_dt_ = dt;
   max_speed_ = scheme_.diagnostics().max_speed;
-  remove_leaked();
   check_state();
+  remove_leaked();
 }
 
 void Simulation::remove_leaked() {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sloshsph/core/errors.hpp"
 #include "sloshsph/physics/walls.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/operators.hpp"
@@ -41,7 +42,19 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
       eta2_(0.01 * h * 0.01 * h),
       rho_ref_(spec.fluid.density * spec.particles.dp * spec.particles.dp *
                lattice_number_density(spec.particles.kernel, h, spec.particles.dp)),
-      neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h) {}
+      neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h) {
+  with_kernel(kernel_type_, h, [&](const auto& k) {
+    const double dp = dp_;
+    const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+    lambda_full_ = 0.0;
+    for (int a = -n; a <= n; ++a)
+      for (int b = -n; b <= n; ++b) {
+        if (a == 0 && b == 0) continue;
+        const double r2 = dp * dp * (a * a + b * b);
+        lambda_full_ += laplacian_weight(dp * dp, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
+      }
+  });
+}
 
 std::size_t IsphScheme::memory_bytes() const {
   const std::size_t n = data_.velocity_old.capacity();
@@ -239,11 +252,12 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
   // the previous pressures, p_i = (b_i + sum_j lambda_ij p_j) / sum_j lambda_ij, with
   // lambda_ij = (2 V / rho0) F_ij r^2 / (r^2 + eta^2) (eq. 2.5 with rho_i = rho_j).
   const double eta2 = eta2_;
+  const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   IsphData& d = data_;
   std::vector<double>& next = d.ppe_source;  // overwritten in place: b_i is read once per i
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    if (d.free_surface[i]) {
+    if (dirichlet && d.free_surface[i]) {
       next[i] = 0.0;
       continue;
     }
@@ -255,9 +269,10 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
       const double r2 = norm2(rij);
       const double lambda = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2) / rho0_;
       diag += lambda;
-      const bool zero = p.is_fluid(j) && d.free_surface[j];
+      const bool zero = dirichlet && p.is_fluid(j) && d.free_surface[j];
       off += zero ? 0.0 : lambda * p.pressure[j];
     }
+    if (!dirichlet) diag = std::min(diag, lambda_full_);  // missing neighbours: air at p = 0 (lambda < 0)
     next[i] = diag != 0.0 ? (d.ppe_source[i] + off) / diag : 0.0;
   }
 #pragma omp parallel for schedule(static)
@@ -277,8 +292,9 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
   const std::size_t n = p.size();
   std::vector<int> unknown(n, -1);
   int nu = 0;
+  const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   for (std::size_t i = 0; i < p.n_fluid; ++i)
-    if (!d.free_surface[i]) unknown[i] = nu++;
+    if (!(dirichlet && d.free_surface[i])) unknown[i] = nu++;
   for (std::size_t w = p.n_fluid; w < n; ++w)
     if (neighbours_.count(w) > 0) unknown[w] = nu++;
 
@@ -307,6 +323,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
       if (unknown[j] >= 0) triplets.emplace_back(row, unknown[j], -coef);
     }
     if (diag == 0.0) diag = 1.0;  // isolated wall particle: p_w = 0
+    if (!dirichlet && p.is_fluid(i)) diag = std::min(diag, lambda_full_);  // air at p = 0
     triplets.emplace_back(row, row, diag);
     b[row] = rhs;
   }
@@ -316,8 +333,19 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
   solver.setTolerance(scheme_.solver_tolerance);
   solver.setMaxIterations(scheme_.solver_max_iterations);
   solver.compute(A);
-  const Eigen::VectorXd x = solver.solveWithGuess(b, x0);
-  diagnostics_.solver_iterations = static_cast<int>(solver.iterations());
+  Eigen::VectorXd x = solver.solveWithGuess(b, x0);
+  int iterations = static_cast<int>(solver.iterations());
+  if (solver.info() != Eigen::Success || !x.allFinite()) {
+    // BiCGSTAB can break down (a vanishing inner product); a restart from zero almost always
+    // gets past it. If it does not, the step fails with the solver's numbers.
+    x = solver.solveWithGuess(b, Eigen::VectorXd::Zero(nu));
+    iterations += static_cast<int>(solver.iterations());
+    if (solver.info() != Eigen::Success || !x.allFinite())
+      throw RunFailure("the implicit pressure solve did not converge (BiCGSTAB, " + std::to_string(nu) +
+                       " unknowns, " + std::to_string(iterations) + " iterations, relative residual " +
+                       std::to_string(solver.error()) + "); try a smaller time.dt or scheme.solver_max_iterations");
+  }
+  diagnostics_.solver_iterations = iterations;
   diagnostics_.solver_residual = solver.error();
   for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = unknown[i] >= 0 ? x[unknown[i]] : 0.0;
   // Wall pressures from the solved fluid, with the clipping at 0 of adami_wall_pressure

@@ -62,6 +62,7 @@ class IsphScheme {
   double nu_;
   double eta2_;     // (0.01 h)^2, eqs. 2.5 and 2.16
   double rho_ref_;  // kernel sum of a full lattice: the density of the undisturbed fluid
+  double lambda_full_ = 0.0;  // sum of the Laplacian pair weights over a full lattice (air model)
   NeighbourList neighbours_;
   IsphData data_;
   StepDiagnostics diagnostics_;

@@ -48,7 +48,8 @@ TEST(CaseReader, MinimalCaseHasTheDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(s.particles.kernel_ratio, 1.4);
   EXPECT_EQ(s.particles.wall_layers, 2);
   EXPECT_DOUBLE_EQ(s.scheme.alpha, 0.01);
-  EXPECT_EQ(s.scheme.pressure, PressureSolve::explicit_update);
+  EXPECT_EQ(s.scheme.pressure, PressureSolve::implicit_krylov);
+  EXPECT_EQ(s.scheme.free_surface, FreeSurfaceModel::air);
   EXPECT_DOUBLE_EQ(s.scheme.free_surface_threshold, 0.9);
   EXPECT_TRUE(s.scheme.turbulence);
   EXPECT_DOUBLE_EQ(s.scheme.smagorinsky, 0.1);
@@ -168,6 +169,22 @@ TEST(CaseReader, ResolvedCaseReadsBackToTheSameSpec) {
   const CaseSpec b = read_case_text(resolved_case_toml(a), "resolved.toml");
   EXPECT_EQ(resolved_case_toml(a).substr(resolved_case_toml(a).find("\n\n")),
             resolved_case_toml(b).substr(resolved_case_toml(b).find("\n\n")));
+}
+
+}  // namespace
+}  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+TEST(CaseReader, FreeSurfaceModelFollowsThePressureSolve) {
+  EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"scheme.pressure=explicit"}).scheme.free_surface,
+            FreeSurfaceModel::thesis);
+  EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"scheme.pressure=implicit", "scheme.free_surface=thesis"})
+                .scheme.free_surface,
+            FreeSurfaceModel::thesis);
+  expect_error(kMinimal, {"scheme.pressure=explicit", "scheme.free_surface=air"}, "scheme.free_surface",
+               "needs pressure = \"implicit\"");
 }
 
 }  // namespace

@@ -1,0 +1,115 @@
+#pragma once
+// Kernel gradient correction and renormalised gradients (Shao et al. 2012 eqs. 15-17;
+// the same matrix renormalises the density gradient of delta-SPH, Dincer 2019 eqs. 8-9,
+// after Randles & Libersky 1996 and Marrone et al. 2011).
+//
+// The moment matrix of particle i is
+//   M_i = sum_j V_j grad_i W_ij (x) r_ji,   M_kl = sum_j V_j (d W_ij / d x_k) (r_j - r_i)_l,
+// (Shao eq. 17 before inversion). For any linear field f, sum_j V_j (f_j - f_i) grad_i W_ij
+// = M_i grad f, so L_i = M_i^-1 applied to that sum gives the exact gradient whatever the
+// particle disorder or kernel truncation; the corrected kernel gradient is L_i grad_i W_ij
+// (Shao eq. 16). For radial kernels grad_i W_ij = F(r) r_ij, so M_i = -sum V F r_ij r_ij^T is
+// symmetric and, in a full lattice, close to the identity.
+//
+// Near a free surface M_i can be singular (a particle with few neighbours, all on a line):
+// then no correction is applied (L_i = I), as the renormalisation would amplify noise.
+#include <cmath>
+#include <vector>
+
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+
+namespace sloshsph {
+
+struct Mat2 {
+  double xx = 1.0, xy = 0.0, yx = 0.0, yy = 1.0;  // identity by default
+};
+
+inline Vec2 operator*(const Mat2& m, Vec2 v) { return {m.xx * v.x + m.xy * v.y, m.yx * v.x + m.yy * v.y}; }
+
+inline Mat2 zero_mat2() { return {0.0, 0.0, 0.0, 0.0}; }
+
+// Smallest eigenvalue of the symmetric part of m (m is symmetric for radial kernels).
+inline double min_eigenvalue(const Mat2& m) {
+  const double a = m.xx, d = m.yy, b = 0.5 * (m.xy + m.yx);
+  const double mean = 0.5 * (a + d), diff = 0.5 * (a - d);
+  return mean - std::sqrt(diff * diff + b * b);
+}
+
+// Smallest eigenvalue of M below which the correction is not applied. In the bulk M ~ I
+// (eigenvalues ~1); a particle on a straight free surface keeps about half its support
+// (eigenvalue ~0.5 normal to it). 0.1 rejects only nearly one-sided or line-like neighbourhoods,
+// where the inverse would multiply the noise of the sum by more than 10.
+inline constexpr double kMinCorrectionEigenvalue = 0.1;
+
+// L = M^-1, or the identity when M is (nearly) singular. Returns whether M was inverted.
+inline bool invert_moment_matrix(const Mat2& m, Mat2& inverse, double min_eigen = kMinCorrectionEigenvalue) {
+  const double det = m.xx * m.yy - m.xy * m.yx;
+  if (!(min_eigenvalue(m) > min_eigen) || !(std::abs(det) > 0.0)) {
+    inverse = Mat2{};
+    return false;
+  }
+  const double inv = 1.0 / det;
+  inverse = {m.yy * inv, -m.xy * inv, -m.yx * inv, m.xx * inv};
+  return true;
+}
+
+// Adds the pair j of particle i to the moment matrix: V_j grad_i W_ij (x) r_ji with
+// grad_i W_ij = F r_ij and r_ji = -r_ij.
+inline void add_moment(Mat2& m, Vec2 rij, double volume_j, double gradient_factor) {
+  const double c = -volume_j * gradient_factor;
+  m.xx += c * rij.x * rij.x;
+  m.xy += c * rij.x * rij.y;
+  m.yx += c * rij.y * rij.x;
+  m.yy += c * rij.y * rij.y;
+}
+
+struct RenormalisedGradient {
+  Vec2 gradient;   // L_i sum_j V_j (f_j - f_i) grad_i W_ij
+  Mat2 correction; // L_i (identity when not corrected)
+  bool corrected = false;
+};
+
+// The renormalised gradient of f at particle i over the neighbours j of its row for which
+// accept(j) is true (Shao eqs. 15-17; Dincer eqs. 8-9). `volume` holds V_j = m_j / rho_j.
+template <class K, class Accept>
+RenormalisedGradient renormalised_gradient(const K& k, const std::vector<Vec2>& x, const std::vector<double>& f,
+                                           const std::vector<double>& volume, const NeighbourList& nl,
+                                           std::size_t i, Accept&& accept,
+                                           double min_eigen = kMinCorrectionEigenvalue) {
+  Mat2 m = zero_mat2();
+  Vec2 sum;
+  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+    const std::size_t j = *it;
+    if (!accept(j)) continue;
+    const Vec2 rij = x[i] - x[j];
+    const double F = k.gradient_factor(norm(rij));
+    if (F == 0.0) continue;
+    add_moment(m, rij, volume[j], F);
+    sum += rij * (volume[j] * (f[j] - f[i]) * F);
+  }
+  RenormalisedGradient g;
+  g.corrected = invert_moment_matrix(m, g.correction, min_eigen);
+  g.gradient = g.correction * sum;
+  return g;
+}
+
+// L_i alone (Shao eq. 17), over the neighbours accepted by `accept`.
+template <class K, class Accept>
+Mat2 kernel_correction_matrix(const K& k, const std::vector<Vec2>& x, const std::vector<double>& volume,
+                              const NeighbourList& nl, std::size_t i, Accept&& accept,
+                              double min_eigen = kMinCorrectionEigenvalue) {
+  Mat2 m = zero_mat2();
+  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+    const std::size_t j = *it;
+    if (!accept(j)) continue;
+    const Vec2 rij = x[i] - x[j];
+    const double F = k.gradient_factor(norm(rij));
+    if (F != 0.0) add_moment(m, rij, volume[j], F);
+  }
+  Mat2 l;
+  invert_moment_matrix(m, l, min_eigen);
+  return l;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,540 @@
+#include "sloshsph/schemes/wcsph.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/tank.hpp"
+#include "sloshsph/physics/repulsive_force.hpp"
+#include "sloshsph/physics/walls.hpp"
+#include "sloshsph/physics/wcsph_density.hpp"
+#include "sloshsph/physics/wcsph_eos.hpp"
+#include "sloshsph/sph/kernel.hpp"
+#include "sloshsph/sph/operators.hpp"
+
+namespace sloshsph {
+
+void WcsphData::resize_fluid(std::size_t n_fluid) {
+  id.resize(n_fluid);
+  acceleration.resize(n_fluid);
+  density_rate.resize(n_fluid);
+  xsph.resize(n_fluid);
+  position_start.resize(n_fluid);
+  velocity_start.resize(n_fluid);
+  density_start.resize(n_fluid);
+  density_gradient.resize(n_fluid);
+  correction.resize(n_fluid);
+  stress.resize(n_fluid);
+  wall_acceleration.resize(n_fluid);
+}
+
+void WcsphData::resize_all(std::size_t n) {
+  volume.resize(n);
+  scratch.resize(n);
+}
+
+namespace {
+
+template <class T>
+void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
+  std::copy(out.begin(), out.end(), v.begin());
+}
+
+}  // namespace
+
+WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
+    : spec_(spec.scheme.wcsph),
+      kernel_type_(spec.particles.kernel),
+      h_(h),
+      dp_(spec.particles.dp),
+      rho0_(spec.fluid.density),
+      nu_(spec.fluid.viscosity),
+      c0_(case_sound_speed(spec)),
+      eta2_(0.01 * h * h),
+      rho_ref_(spec.fluid.density * spec.particles.dp * spec.particles.dp *
+               lattice_number_density(spec.particles.kernel, h, spec.particles.dp)),
+      ct_(spec.scheme.ct),
+      tank_(spec.tank),
+      tank_where_(spec.where("tank.shape")),
+      neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h) {
+  if (!(c0_ > 0.0) || !std::isfinite(c0_)) {
+    const std::string key = spec.scheme.wcsph.sound_speed > 0.0 ? "scheme.wcsph.sound_speed"
+                                                                : "scheme.wcsph.max_density_variation";
+    throw InputError(spec.where(key), key,
+                     "gives no positive sound speed (c0 = " + std::to_string(c0_) +
+                         " m/s); set scheme.wcsph.sound_speed or check the fill depth, tank length and gravity");
+  }
+  if (!(spec_.cfl > 0.0))
+    throw InputError(spec.where("scheme.wcsph.cfl"), "scheme.wcsph.cfl", "must be positive");
+}
+
+std::size_t WcsphScheme::memory_bytes() const {
+  const WcsphData& d = data_;
+  const std::size_t n = d.id.capacity();
+  const std::size_t per_fluid = sizeof(std::int32_t) + 7 * sizeof(Vec2) + 2 * sizeof(double) + sizeof(Mat2) +
+                                sizeof(SymTensor2);
+  return n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
+         (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) + repulsive_.capacity() +
+         neighbours_.memory_bytes();
+}
+
+// ---------------------------------------------------------------------------------------
+// Bookkeeping: the rates kept between steps follow the particles through re-sorting and
+// removals; the neighbour list is rebuilt early enough to stay valid over a whole step.
+
+// The stored rates belong to the particles named in data_.id. After the driver removed
+// leaked particles, they are remapped by id. Returns false if some particle has none.
+bool WcsphScheme::sync_state(const Particles& p) {
+  WcsphData& d = data_;
+  const std::size_t n = p.n_fluid;
+  if (d.id.size() == n && std::equal(d.id.begin(), d.id.end(), p.id.begin())) return true;
+  bool complete = !d.id.empty();
+  std::vector<Vec2> acc(n), xs(n);
+  std::vector<double> rate(n, 0.0);
+  if (complete) {
+    std::int32_t max_id = 0;
+    for (std::int32_t v : d.id) max_id = std::max(max_id, v);
+    std::vector<std::int64_t> where(static_cast<std::size_t>(max_id) + 1, -1);
+    for (std::size_t k = 0; k < d.id.size(); ++k) where[static_cast<std::size_t>(d.id[k])] = static_cast<std::int64_t>(k);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int32_t v = p.id[i];
+      const std::int64_t k = (v >= 0 && v <= max_id) ? where[static_cast<std::size_t>(v)] : -1;
+      if (k < 0) {
+        complete = false;
+        continue;
+      }
+      acc[i] = d.acceleration[static_cast<std::size_t>(k)];
+      xs[i] = d.xsph[static_cast<std::size_t>(k)];
+      rate[i] = d.density_rate[static_cast<std::size_t>(k)];
+    }
+  }
+  d.resize_fluid(n);
+  std::copy(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(n), d.id.begin());
+  d.acceleration = std::move(acc);
+  d.xsph = std::move(xs);
+  d.density_rate = std::move(rate);
+  return complete;
+}
+
+// Rebuilt when NeighbourList::stale says so, and also when some fluid particle could move
+// more than half the skin by the end of this step (its displacement since the build plus
+// dt (|u| + |u_xsph| + dt |a|), a the last rate plus the body force): every evaluation inside
+// the step then sees all pairs within 2h.
+void WcsphScheme::update_neighbours(Particles& p, double dt, const FrameForce& frame) {
+  WcsphData& d = data_;
+  diagnostics_.neighbours_rebuilt = false;
+  bool rebuild = neighbours_.stale(p.position, p.n_fluid) || d.position_at_build.size() != p.n_fluid;
+  if (!rebuild) {
+    const double limit = 0.5 * neighbours_.skin();
+    bool far = false;
+#pragma omp parallel for reduction(|| : far) schedule(static)
+    for (std::size_t i = 0; i < p.n_fluid; ++i) {
+      const Vec2 a = d.acceleration[i] + frame.at(p.position[i], p.velocity[i]);
+      const double reach = norm(p.position[i] - d.position_at_build[i]) + dt * (norm(p.velocity[i]) + norm(d.xsph[i]) + dt * norm(a));
+      far = far || reach > limit;
+    }
+    rebuild = far;
+  }
+  if (!rebuild) return;
+  // Keep the fluid in cell order: neighbours then sit close in memory.
+  const std::vector<std::uint32_t> order = cell_order(p.position, p.n_fluid, neighbours_.search_radius());
+  p.permute_fluid(order);
+  permute(d.id, order);
+  permute(d.acceleration, order);
+  permute(d.density_rate, order);
+  permute(d.xsph, order);
+  neighbours_.build(p.position, p.n_fluid);
+  d.position_at_build.assign(p.position.begin(), p.position.begin() + static_cast<std::ptrdiff_t>(p.n_fluid));
+  diagnostics_.neighbours_rebuilt = true;
+}
+
+// Shao's repulsive particles are the first layer of wall particles: sample_walls puts it
+// dp/2 outside the wall surface, at the lattice spacing dp from the first fluid row, so the
+// repulsive force (zero beyond dp, Shao eq. 27) vanishes for fluid at rest as it is placed.
+void WcsphScheme::mark_repulsive_layer(const Particles& p) {
+  repulsive_.assign(p.n_wall(), 0);
+  if (spec_.walls != WallTreatment::repulsive) return;
+  const TankGeometry tank = make_tank(tank_, tank_where_);
+  for (std::size_t w = p.n_fluid; w < p.size(); ++w)
+    repulsive_[w - p.n_fluid] = tank.signed_distance(p.position[w]) > -dp_ ? 1 : 0;
+}
+
+void WcsphScheme::fluid_pressure(Particles& p) const {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = eos_pressure(p.density[i], rho0_, c0_);
+}
+
+// ---------------------------------------------------------------------------------------
+// The stages of one evaluation of the rates. Each is a gather loop over particles (each
+// writes only itself), so the result does not depend on the number of threads.
+
+namespace {
+
+// Turbulent stress R = tau / rho of fluid particle i from its velocity gradient
+// grad(u)_kl = sum_j V_j (u_j - u_i)_k (L_i grad W)_l (walls carry their image velocities).
+//  * Smagorinsky (Shao eqs. 21-23): nu_t = (Cs h)^2 sqrt(2 S:S), R = 2 nu_t S. Shao gives no
+//    closure for the turbulent kinetic energy k; its isotropic part -2/3 k I only adds to the
+//    pressure, so k = 0 here.
+//  * SPS (as the ISPH scheme, thesis eqs. 2.8-2.9): nu_t = (Cs dp)^2 |S|, k = (nu_t / (Ct dp))^2,
+//    R = 2 nu_t S - 2/3 k I.
+struct TurbulenceModel {
+  WcsphTurbulence type = WcsphTurbulence::none;
+  double mixing_length2 = 0.0;  // (Cs h)^2 or (Cs dp)^2
+  double ct_dp = 1.0;           // Ct dp (SPS)
+};
+
+template <class K>
+SymTensor2 turbulent_stress(const K& k, const Particles& p, const NeighbourList& nl, const std::vector<double>& volume,
+                            const Mat2& correction, std::size_t i, const TurbulenceModel& model, double& nu_t) {
+  const Vec2 ri = p.position[i], ui = p.velocity[i];
+  double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
+  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+    const std::size_t j = *it;
+    const Vec2 rij = ri - p.position[j];
+    const double F = k.gradient_factor(norm(rij));
+    if (F == 0.0) continue;
+    const Vec2 g = correction * (rij * F);
+    const Vec2 du = (p.velocity[j] - ui) * volume[j];
+    dudx += du.x * g.x;
+    dudy += du.x * g.y;
+    dvdx += du.y * g.x;
+    dvdy += du.y * g.y;
+  }
+  const double sxy = 0.5 * (dudy + dvdx);
+  const double s_mag = std::sqrt(2.0 * (dudx * dudx + dvdy * dvdy + 2.0 * sxy * sxy));
+  nu_t = model.mixing_length2 * s_mag;
+  const double kt = model.type == WcsphTurbulence::sps ? (nu_t / model.ct_dp) * (nu_t / model.ct_dp) : 0.0;
+  return {2.0 * nu_t * dudx - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * dvdy - 2.0 / 3.0 * kt};
+}
+
+// The constants of the rate sweep.
+struct RateTerms {
+  double mass = 0.0;
+  double rho0 = 0.0;
+  double c0 = 0.0;
+  double h = 0.0;
+  double dp = 0.0;
+  double delta = 0.0;       // delta-SPH coefficient
+  double viscosity_av = 0.0;  // alpha h c0 rho0 (Dincer eq. 6), 0: laminar
+  double nu = 0.0;          // laminar kinematic viscosity
+  double eta2 = 0.0;        // 0.01 h^2
+  double xsph = 0.0;        // epsilon
+  bool correct = false;     // kernel gradient correction
+  bool turbulence = false;
+  bool repulsive = false;   // wall treatment
+};
+
+// drho/dt, du/dt (without the body force), the XSPH correction, and the share of du/dt due
+// to wall particles, for every fluid particle.
+//  * Continuity, Dincer eq. 5 (Shao eq. 5): sum_j m u_ij . grad W (corrected gradient with KGC).
+//  * delta-SPH diffusion, Dincer eqs. 5 and 7 (Marrone et al. 2011):
+//      delta h c0 sum_j V_j psi_ij . grad W,
+//      psi_ij = 2 (rho_j - rho_i) r_ji / |r_ij|^2 - (<grad rho>_i^L + <grad rho>_j^L).
+//    With grad W = F r_ij: psi_ij . grad W = -F (2 (rho_j - rho_i) + (g_i + g_j) . r_ij), which
+//    vanishes for any linear density field (the hydrostatic one) since the renormalised
+//    gradients are exact there. Summed over fluid neighbours only: the wall densities are
+//    extrapolations, not fluid to diffuse into, and the fluid-only renormalised gradient is exact
+//    for linear fields next to walls as well.
+//  * Pressure, Dincer eq. 6 with V_j = m_j / rho_j (the extracted text prints m_j; rho_i du/dt has
+//    the units of sum_j V_j p grad W): -(1/rho_i) sum_j V_j (p_i + p_j) grad W. Antisymmetric in
+//    i, j: conserves momentum (without KGC).
+//  * Artificial viscosity, Dincer eq. 6: alpha h c0 (rho0 / rho_i) sum_j V_j pi_ij grad W,
+//    pi_ij = (u_j - u_i).(r_j - r_i) / |r_ij|^2 = u_ij . r_ij / r^2 (the extracted text lost the
+//    minus signs; this sign damps approach and separation alike). Uncorrected kernel gradient.
+//  * Laminar viscosity (artificial_viscosity == 0), Shao eq. 6 (Morris et al. 1997) with
+//    mu = rho0 nu: sum_j 8 m mu F r^2 / ((rho_i + rho_j)^2 (r^2 + 0.01 h^2)) u_ij =
+//    nu sum_j laplacian_weight(4 m rho0 / (rho_i + rho_j)^2, F, r^2, eta^2) u_ij.
+//  * Turbulence, Shao eq. 24 (with the mass m_j the extraction lost): sum_j m (R_i/rho_i + R_j/rho_j) . grad W;
+//    a wall particle mirrors the stress of i (zero normal gradient at the wall), as in the ISPH scheme.
+//  * Repulsive wall particles (Shao eqs. 25-28): physics/repulsive_force.hpp.
+//  * XSPH, Dincer eq. 11 (the minus sign lost in extraction restored): eps sum_{j fluid} m (u_j - u_i)
+//    W_ij / rho_ij, rho_ij = (rho_i + rho_j) / 2. Fluid neighbours only: the velocity is smoothed
+//    within the fluid; its pair terms cancel, so the mean drift is the mean velocity.
+template <class K>
+void rates(const K& k, const Particles& p, const NeighbourList& nl, const RateTerms& t,
+           const std::vector<std::uint8_t>& repulsive, WcsphData& d) {
+  const std::size_t nf = p.n_fluid;
+  const double m = t.mass;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Vec2 ri = p.position[i], ui = p.velocity[i];
+    const double rho_i = p.density[i], pi = p.pressure[i];
+    const Mat2 L = t.correct ? d.correction[i] : Mat2{};
+    const Vec2 gi = d.density_gradient[i];
+    const SymTensor2 Ri = t.turbulence ? d.stress[i] : SymTensor2{};
+    double drho = 0.0, diffusion = 0.0;
+    Vec2 a_fluid, a_wall, xs;
+    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
+      const std::size_t j = *it;
+      const Vec2 rij = ri - p.position[j];
+      const double r2 = norm2(rij);
+      const double r = std::sqrt(r2);
+      const double F = k.gradient_factor(r);
+      const bool fluid_j = j < nf;
+      Vec2 a;
+      if (!fluid_j && t.repulsive && repulsive[j - nf]) a += repulsive_acceleration(rij, t.c0, t.h, t.dp);
+      if (F != 0.0) {
+        const Vec2 grad = rij * F;
+        const Vec2 grad_c = t.correct ? L * grad : grad;
+        const double Vj = d.volume[j], rho_j = p.density[j];
+        const Vec2 uij = ui - p.velocity[j];
+        drho += m * dot(uij, grad_c);
+        if (fluid_j && t.delta > 0.0)
+          diffusion += Vj * (-F) * (2.0 * (rho_j - rho_i) + dot(gi + d.density_gradient[j], rij));
+        a += grad_c * (-Vj * (pi + p.pressure[j]) / rho_i);
+        if (t.viscosity_av > 0.0) {
+          a += grad * (t.viscosity_av / rho_i * Vj * dot(uij, rij) / r2);
+        } else if (t.nu > 0.0) {
+          const double rho_sum = rho_i + rho_j;
+          a += uij * (t.nu * laplacian_weight(4.0 * m * t.rho0 / (rho_sum * rho_sum), F, r2, t.eta2));
+        }
+        if (t.turbulence) {
+          const SymTensor2 Rj = fluid_j ? d.stress[j] : Ri;
+          const double sxx = Ri.xx / rho_i + Rj.xx / rho_j, sxy = Ri.xy / rho_i + Rj.xy / rho_j,
+                       syy = Ri.yy / rho_i + Rj.yy / rho_j;
+          a += Vec2{sxx * grad_c.x + sxy * grad_c.y, sxy * grad_c.x + syy * grad_c.y} * m;
+        }
+        if (fluid_j && t.xsph > 0.0) xs += (p.velocity[j] - ui) * (2.0 * m * k.w(r) / (rho_i + rho_j));
+      }
+      if (fluid_j) a_fluid += a;
+      else a_wall += a;
+    }
+    d.density_rate[i] = drho + t.delta * t.h * t.c0 * diffusion;
+    d.acceleration[i] = a_fluid + a_wall;
+    d.wall_acceleration[i] = a_wall;
+    d.xsph[i] = t.xsph * xs;
+  }
+}
+
+}  // namespace
+
+// Wall pressure, density and velocity from the fluid around each wall particle.
+//  * Adami (default): free-slip image velocity and the pressure of thesis eq. 2.19 / Adami et al.
+//    2012 eq. 27 (physics/walls.hpp), the density from the inverse equation of state.
+//  * Repulsive (Shao sec. 2.5): Shepard-normalised density and no-slip image velocity of the fluid
+//    around (Shao eqs. 29-30, physics/wcsph_density.hpp), the pressure from the equation of state.
+//    Shao takes the ghost values from the fluid and the repulsive particles; the neighbour list has
+//    no wall-wall pairs, and the repulsive particles' values are themselves Shepard averages of
+//    the same fluid, so both layers here interpolate the fluid directly. The pressure is clipped
+//    at 0 as adami_wall_pressure does (above the free surface the mirrored medium is air).
+template <class K>
+void WcsphScheme::wall_values(const K& k, Particles& p, const FrameForce& frame) {
+  if (spec_.walls == WallTreatment::repulsive) {
+    shepard_wall_values(k, p, neighbours_, rho0_);
+#pragma omp parallel for schedule(static)
+    for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
+      p.pressure[w] = std::max(0.0, eos_pressure(p.density[w], rho0_, c0_));
+      p.density[w] = eos_density(p.pressure[w], rho0_, c0_);
+    }
+    return;
+  }
+  extrapolate_wall_velocity(k, p, neighbours_, p.velocity);
+  adami_wall_pressure(k, p, neighbours_, p.position, frame, rho0_);
+#pragma omp parallel for schedule(static)
+  for (std::size_t w = p.n_fluid; w < p.size(); ++w) p.density[w] = eos_density(p.pressure[w], rho0_, c0_);
+}
+
+// One evaluation of the rates at the state the particles hold (positions, velocities, densities).
+template <class K>
+void WcsphScheme::evaluate(const K& k, Particles& p, const FrameForce& frame) {
+  WcsphData& d = data_;
+  const std::size_t nf = p.n_fluid;
+  d.resize_fluid(nf);
+  d.resize_all(p.size());
+  if (repulsive_.size() != p.n_wall()) mark_repulsive_layer(p);
+
+  fluid_pressure(p);           // Dincer eq. 10
+  wall_values(k, p, frame);    // walls: Adami or Shao eqs. 29-30
+#pragma omp parallel for schedule(static)
+  for (std::size_t j = 0; j < p.size(); ++j) d.volume[j] = p.mass / p.density[j];
+
+  // Renormalised density gradient (Dincer eqs. 8-9), kernel gradient correction (Shao eqs.
+  // 16-17) and turbulent stress: per particle, before the rates that read them for neighbours.
+  const bool turbulence = spec_.turbulence != WcsphTurbulence::none;
+  TurbulenceModel model;
+  model.type = spec_.turbulence;
+  if (spec_.turbulence == WcsphTurbulence::smagorinsky) model.mixing_length2 = (spec_.smagorinsky * h_) * (spec_.smagorinsky * h_);
+  else model.mixing_length2 = (spec_.smagorinsky * dp_) * (spec_.smagorinsky * dp_);
+  model.ct_dp = ct_ * dp_;
+  double nu_t_max = 0.0;
+  if (spec_.delta > 0.0 || spec_.kernel_gradient_correction || turbulence) {
+    auto fluid_only = [nf](std::size_t j) { return j < nf; };
+    auto all = [](std::size_t) { return true; };
+#pragma omp parallel for schedule(static) reduction(max : nu_t_max)
+    for (std::size_t i = 0; i < nf; ++i) {
+      if (spec_.delta > 0.0)
+        d.density_gradient[i] = renormalised_gradient(k, p.position, p.density, d.volume, neighbours_, i, fluid_only).gradient;
+      const Mat2 L = spec_.kernel_gradient_correction ? kernel_correction_matrix(k, p.position, d.volume, neighbours_, i, all)
+                                                      : Mat2{};
+      d.correction[i] = L;
+      if (turbulence) {
+        double nu_t = 0.0;
+        d.stress[i] = turbulent_stress(k, p, neighbours_, d.volume, L, i, model, nu_t);
+        nu_t_max = std::max(nu_t_max, nu_t);
+      }
+    }
+  }
+  max_eddy_viscosity_ = nu_t_max;
+
+  RateTerms t;
+  t.mass = p.mass;
+  t.rho0 = rho0_;
+  t.c0 = c0_;
+  t.h = h_;
+  t.dp = dp_;
+  t.delta = spec_.delta;
+  t.viscosity_av = spec_.artificial_viscosity * h_ * c0_ * rho0_;
+  t.nu = nu_;
+  t.eta2 = eta2_;
+  t.xsph = spec_.xsph;
+  t.correct = spec_.kernel_gradient_correction;
+  t.turbulence = turbulence;
+  t.repulsive = spec_.walls == WallTreatment::repulsive;
+  rates(k, p, neighbours_, t, repulsive_, d);
+
+  Vec2 wall;  // fixed-order sum: independent of the thread count
+  for (std::size_t i = 0; i < nf; ++i) wall += d.wall_acceleration[i];
+  last_wall_force_ = wall * p.mass;
+}
+
+void WcsphScheme::initialise(Particles& p, const FrameForce& frame) {
+  sync_state(p);
+  update_neighbours(p, 0.0, frame);
+  mark_repulsive_layer(p);
+  // The scene's (hydrostatic) pressures become densities: the state is then in discrete
+  // balance up to the free-surface rows.
+  for (std::size_t i = 0; i < p.n_fluid; ++i) p.density[i] = eos_density(p.pressure[i], rho0_, c0_);
+  with_kernel(kernel_type_, h_, [&](const auto& k) { evaluate(k, p, frame); });
+  steps_ = 0;
+}
+
+// ---------------------------------------------------------------------------------------
+// Time integration. Both integrators evaluate the rates once per step; the body force
+// frame.at(r, u) is added where it is used, with the frame of this step (the driver passes
+// the frame at the middle of the step), so an imposed motion enters at second order.
+
+// Position Verlet (Monaghan 2005, sec. 7.5; "drift-kick-drift"):
+//   r^{n+1/2} = r^n + dt/2 u^n
+//   evaluate at r^{n+1/2}, with u^{n+1/2} ~ u^n + dt/2 a^{n-1/2} and rho^{n+1/2} = rho^n + dt/2 D^{n-1/2}
+//   (the rates of the last evaluation, for the velocity- and density-dependent terms)
+//   u^{n+1} = u^n + dt a^{n+1/2},   rho^{n+1} = rho^n + dt D^{n+1/2}
+//   r^{n+1} = r^{n+1/2} + dt/2 u^{n+1} + dt u_xsph^{n+1/2}
+// The wall force reported is that of the midpoint evaluation: the one that changed the
+// momentum over the step.
+template <class K>
+void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in) {
+  WcsphData& d = data_;
+  const double dt = in.dt;
+  const std::size_t nf = p.n_fluid;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Vec2 r = p.position[i], u = p.velocity[i];
+    const double rho = p.density[i];
+    d.position_start[i] = r;
+    d.velocity_start[i] = u;
+    d.density_start[i] = rho;
+    const Vec2 a = d.acceleration[i] + in.frame.at(r, u);
+    p.position[i] = r + 0.5 * dt * u;
+    p.velocity[i] = u + 0.5 * dt * a;
+    p.density[i] = rho + 0.5 * dt * d.density_rate[i];
+  }
+  evaluate(k, p, in.frame);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i]);
+    const Vec2 u = d.velocity_start[i] + dt * a;
+    p.velocity[i] = u;
+    p.density[i] = d.density_start[i] + dt * d.density_rate[i];
+    p.position[i] += 0.5 * dt * u + dt * d.xsph[i];
+  }
+  diagnostics_.wall_force = last_wall_force_;
+}
+
+// Leap-frog (Dincer 2019; Monaghan 1989) in its kick-drift-kick form:
+//   u^{n+1/2} = u^n + dt/2 a^n,  rho^{n+1/2} = rho^n + dt/2 D^n
+//   r^{n+1} = r^n + dt (u^{n+1/2} + u_xsph^n)
+//   evaluate at r^{n+1}, with u^{n+1} ~ u^{n+1/2} + dt/2 a^n and rho^{n+1} ~ rho^{n+1/2} + dt/2 D^n
+//   u^{n+1} = u^{n+1/2} + dt/2 a^{n+1},  rho^{n+1} = rho^{n+1/2} + dt/2 D^{n+1}
+// The momentum change over the step is dt (F^n + F^{n+1}) / 2, so the wall force reported is
+// the mean of the wall forces of the two evaluations.
+template <class K>
+void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
+  WcsphData& d = data_;
+  const double dt = in.dt;
+  const std::size_t nf = p.n_fluid;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Vec2 r = p.position[i], u = p.velocity[i];
+    const Vec2 a = d.acceleration[i] + in.frame.at(r, u);
+    const Vec2 u_half = u + 0.5 * dt * a;
+    const double rho_half = p.density[i] + 0.5 * dt * d.density_rate[i];
+    d.velocity_start[i] = u_half;
+    d.density_start[i] = rho_half;
+    p.position[i] = r + dt * (u_half + d.xsph[i]);
+    p.velocity[i] = u_half + 0.5 * dt * a;
+    p.density[i] = rho_half + 0.5 * dt * d.density_rate[i];
+  }
+  const Vec2 wall_before = last_wall_force_;
+  evaluate(k, p, in.frame);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i]);
+    p.velocity[i] = d.velocity_start[i] + 0.5 * dt * a;
+    p.density[i] = d.density_start[i] + 0.5 * dt * d.density_rate[i];
+  }
+  diagnostics_.wall_force = 0.5 * (wall_before + last_wall_force_);
+}
+
+// Pressures of the new densities, the Shepard re-normalisation when due (Shao eqs. 10-11,
+// every shepard_interval steps), wall values at the new positions (for output), diagnostics.
+template <class K>
+void WcsphScheme::finish_step(const K& k, Particles& p, const FrameForce& frame) {
+  ++steps_;
+  fluid_pressure(p);
+  if (spec_.shepard_interval > 0 && steps_ % spec_.shepard_interval == 0) {
+    wall_values(k, p, frame);
+    shepard_density(k, p, neighbours_, data_.scratch);
+    std::copy(data_.scratch.begin(), data_.scratch.begin() + static_cast<std::ptrdiff_t>(p.n_fluid), p.density.begin());
+    fluid_pressure(p);
+  }
+  wall_values(k, p, frame);
+  double vmax2 = 0.0;
+  for (std::size_t i = 0; i < p.n_fluid; ++i) vmax2 = std::max(vmax2, norm2(p.velocity[i]));
+  diagnostics_.max_speed = std::sqrt(vmax2);
+  diagnostics_.free_surface = 0;
+  diagnostics_.solver_iterations = 0;
+  diagnostics_.solver_residual = 0.0;
+}
+
+void WcsphScheme::step(Particles& p, const StepInput& in) {
+  const bool have_rates = sync_state(p);
+  update_neighbours(p, in.dt, in.frame);
+  data_.resize_fluid(p.n_fluid);
+  with_kernel(kernel_type_, h_, [&](const auto& k) {
+    if (!have_rates) evaluate(k, p, in.frame);  // first step without initialise(), or new particles
+    if (spec_.integrator == Integrator::leapfrog) step_leapfrog(k, p, in);
+    else step_symplectic(k, p, in);
+    finish_step(k, p, in.frame);
+  });
+}
+
+double WcsphScheme::stable_dt(const Particles& p, const FrameForce& frame) const {
+  const WcsphData& d = data_;
+  const bool have = d.acceleration.size() == p.n_fluid;
+  double u_max = 0.0, a_max = 0.0;
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    u_max = std::max(u_max, norm(p.velocity[i]));
+    const Vec2 a = (have ? d.acceleration[i] : Vec2{}) + frame.at(p.position[i], p.velocity[i]);
+    a_max = std::max(a_max, norm(a));
+  }
+  double dt = spec_.cfl * h_ / (c0_ + u_max);
+  if (a_max > 0.0) dt = std::min(dt, spec_.cfl * std::sqrt(h_ / a_max));
+  const double nu = (spec_.artificial_viscosity > 0.0 ? 0.0 : nu_) + max_eddy_viscosity_;
+  if (nu > 0.0) dt = std::min(dt, 0.125 * h_ * h_ / nu);
+  return dt;
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,120 @@
+#pragma once
+// Weakly compressible delta-SPH (Dincer 2019 sec. 2.1, eqs. 5-13, after Marrone et al. 2011)
+// with the options of Shao et al. 2012 (sec. 2: density re-normalisation, kernel gradient
+// correction, Smagorinsky turbulence, coupled dynamic solid boundary). WcsphSpec
+// (core/case_spec.hpp) selects the options; docs in /work/notes/wcsph_results.md.
+//
+// Per fluid particle i (V_j = m / rho_j, grad W = grad_i W_ij, r_ij = r_i - r_j, u_ij = u_i - u_j):
+//   drho_i/dt = sum_j m u_ij . grad W  +  delta h c0 sum_{j fluid} V_j psi_ij . grad W     (eqs. 5, 7)
+//   du_i/dt   = -(1/rho_i) sum_j V_j (p_i + p_j) grad W
+//               + alpha h c0 (rho0/rho_i) sum_j V_j pi_ij grad W   (or the laminar viscosity)
+//               + turbulence + wall repulsion + body force                               (eq. 6)
+//   p_i = c0^2 (rho_i - rho0)                                                             (eq. 10)
+//   dr_i/dt = u_i + eps sum_{j fluid} m (u_j - u_i) / rho_ij W_ij                          (eq. 11)
+// Walls: Adami dummy particles with free slip (physics/walls.hpp), or Shao's repulsive
+// particles (the first wall layer) plus ghost particles with Shepard-interpolated values.
+//
+// The driver calls initialise() once, then step() with dt <= stable_dt(). Each step makes one
+// evaluation of the rates (a gather sweep per stage, each particle writing only itself, so the
+// result does not depend on the number of threads).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sloshsph/core/case_spec.hpp"
+#include "sloshsph/core/particles.hpp"
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/physics/kernel_correction.hpp"
+#include "sloshsph/schemes/isph.hpp"  // SymTensor2, lattice_number_density
+#include "sloshsph/schemes/step.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+
+namespace sloshsph {
+
+struct WcsphData {
+  // Kept between steps, one per fluid particle, in particle order; `id` names the particle
+  // each entry belongs to (the driver may remove leaked particles between steps).
+  std::vector<std::int32_t> id;
+  std::vector<Vec2> acceleration;    // du/dt of the last evaluation without the body force, m/s^2
+  std::vector<double> density_rate;  // drho/dt of the last evaluation, kg/m^3/s
+  std::vector<Vec2> xsph;            // XSPH velocity correction of the last evaluation, m/s
+  std::vector<Vec2> position_at_build;  // fluid positions at the last neighbour-list build
+
+  // Scratch of one step.
+  std::vector<Vec2> position_start;  // r at the start of the step
+  std::vector<Vec2> velocity_start;  // u at the start of the step (leap-frog: at the half step)
+  std::vector<double> density_start; // rho at the start of the step (leap-frog: at the half step)
+  std::vector<double> volume;        // m / rho, every particle
+  std::vector<Vec2> density_gradient;  // renormalised grad rho (Dincer eqs. 8-9), fluid
+  std::vector<Mat2> correction;        // kernel gradient correction L_i (Shao eq. 17), fluid
+  std::vector<SymTensor2> stress;      // turbulent stress R / rho (Shao eq. 21), m^2/s^2, fluid
+  std::vector<Vec2> wall_acceleration; // part of du/dt due to wall particles (base shear), fluid
+  std::vector<double> scratch;         // Shepard densities
+
+  void resize_fluid(std::size_t n_fluid);
+  void resize_all(std::size_t n);
+};
+
+class WcsphScheme {
+ public:
+  WcsphScheme(const CaseSpec& spec, double h);
+
+  // Fluid densities from the pressures the particles carry (inverse equation of state: the
+  // scene's hydrostatic pressure becomes a hydrostatic density), wall values, and one
+  // evaluation of the rates for the first step.
+  void initialise(Particles& particles, const FrameForce& frame);
+
+  // Advances the particles by input.dt (symplectic position Verlet or leap-frog, by
+  // WcsphSpec::integrator). input.frame is the body force at the middle of the step.
+  void step(Particles& particles, const StepInput& input);
+
+  // The largest stable step for the current state:
+  //   dt = min( cfl h / (c0 + u_max),          acoustic CFL (Monaghan 1992; covers the artificial viscosity)
+  //             cfl sqrt(h / a_max),            force condition, a_max = max |du/dt| of the last evaluation
+  //                                             (with the body force frame.at(r, u))
+  //             0.125 h^2 / (nu + nu_t,max) )   viscous diffusion (Morris et al. 1997)
+  // with cfl = WcsphSpec::cfl.
+  double stable_dt(const Particles& particles, const FrameForce& frame) const;
+
+  double sound_speed() const { return c0_; }
+  const StepDiagnostics& diagnostics() const { return diagnostics_; }
+  const NeighbourList& neighbours() const { return neighbours_; }
+  // Kernel sum of undisturbed fluid (as IsphScheme::reference_density), for surface detection by
+  // the driver's gauges.
+  double reference_density() const { return rho_ref_; }
+  double h() const { return h_; }
+  std::size_t memory_bytes() const;
+
+ private:
+  template <class K> void step_symplectic(const K& k, Particles& p, const StepInput& in);
+  template <class K> void step_leapfrog(const K& k, Particles& p, const StepInput& in);
+  template <class K> void evaluate(const K& k, Particles& p, const FrameForce& frame);
+  template <class K> void wall_values(const K& k, Particles& p, const FrameForce& frame);
+  template <class K> void finish_step(const K& k, Particles& p, const FrameForce& frame);
+  void update_neighbours(Particles& p, double dt, const FrameForce& frame);
+  bool sync_state(const Particles& p);
+  void fluid_pressure(Particles& p) const;
+  void mark_repulsive_layer(const Particles& p);
+
+  WcsphSpec spec_;
+  KernelType kernel_type_;
+  double h_;
+  double dp_;
+  double rho0_;
+  double nu_;
+  double c0_;
+  double eta2_;        // 0.01 h^2, Shao eq. 6
+  double rho_ref_;
+  double ct_;          // SPS constant C_t (SchemeSpec::ct)
+  double max_eddy_viscosity_ = 0.0;
+  Vec2 last_wall_force_;     // leap-frog: wall force of the last evaluation
+  long steps_ = 0;
+  TankSpec tank_;
+  std::string tank_where_;
+  std::vector<std::uint8_t> repulsive_;  // per wall particle (index w - n_fluid): first layer
+  NeighbourList neighbours_;
+  WcsphData data_;
+  StepDiagnostics diagnostics_;
+};
+
+}  // namespace sloshsph
