@@ -110,11 +110,16 @@ struct TimeSpec {
 
 enum class ExcitationType { none, harmonic };
 
+// What `beta` is relative to: the first natural frequency from the modal solver (exact linear
+// theory for the section) or the thesis's closed forms (eqs. 3.29-3.36, 4.29), to reproduce its set-ups.
+enum class BetaReference { modal, thesis };
+
 struct ExcitationSpec {
   ExcitationType type = ExcitationType::none;
   double amplitude = 0.0;            // m
   std::optional<double> frequency;   // Hz, as given
   std::optional<double> beta;        // ratio to the tank's first linear sloshing frequency
+  BetaReference beta_reference = BetaReference::modal;
   double omega = 0.0;                // rad/s, resolved (from frequency or beta)
   double ramp = 0.0;                 // s, smooth ramp-up time
   double phase = 0.0;                // rad, X(t) = A sin(omega t + phase)

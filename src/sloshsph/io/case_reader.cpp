@@ -1,5 +1,6 @@
 #include "sloshsph/io/case_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -29,11 +30,32 @@ FluidSpec read_fluid(TableReader& r) {
   return f;
 }
 
+// Shape-specific keys are read only for their shape, so a key of another shape is an
+// "unknown key" error rather than silently ignored.
 TankSpec read_tank(TableReader& r) {
   TankSpec t;
-  t.shape = r.choice("shape", t.shape, {"rectangle"});
-  t.length = r.positive("length");
-  t.height = r.positive("height");
+  t.shape = r.choice("shape", t.shape, {"rectangle", "sloped", "triangle", "trapezoid", "parabolic", "circular", "polyline"});
+  if (t.shape == "polyline") {
+    t.points = r.points("points");
+    if (t.points.size() < 3) r.fail("points", "a polyline tank needs at least 3 points");
+    double x_min = t.points[0].x, x_max = x_min, y_min = t.points[0].y, y_max = y_min;
+    for (const Vec2& q : t.points) {
+      x_min = std::min(x_min, q.x);
+      x_max = std::max(x_max, q.x);
+      y_min = std::min(y_min, q.y);
+      y_max = std::max(y_max, q.y);
+    }
+    t.length = x_max - x_min;
+    t.height = y_max - y_min;
+  } else {
+    t.length = r.positive("length");
+    t.height = r.positive("height");
+  }
+  if (t.shape == "parabolic") t.coefficient = r.positive("coefficient", t.coefficient);
+  if (t.shape == "sloped" || t.shape == "triangle" || t.shape == "trapezoid") {
+    t.angle = r.in_range("angle", t.angle, 1.0, 89.0);
+    if (t.shape != "triangle") t.bottom_width = r.non_negative("bottom_width", t.bottom_width);
+  }
   r.finish();
   return t;
 }
@@ -100,6 +122,9 @@ ExcitationSpec read_excitation(TableReader& r) {
   e.beta = r.optional_positive("beta");
   if (e.frequency && e.beta) r.fail("beta", "give either 'frequency' (Hz) or 'beta', not both");
   if (!e.frequency && !e.beta) r.fail("frequency", "a harmonic excitation needs 'frequency' (Hz) or 'beta' (ratio to the first sloshing frequency)");
+  if (e.beta)
+    e.beta_reference = r.choice("beta_reference", "modal", {"modal", "thesis"}) == "thesis" ? BetaReference::thesis
+                                                                                           : BetaReference::modal;
   e.ramp = r.non_negative("ramp", e.ramp);
   e.phase = r.number("phase", e.phase);
   e.stop = r.number("stop", e.stop);
@@ -305,7 +330,19 @@ std::string resolved_case_toml(const CaseSpec& s) {
   toml::table root;
   if (!s.title.empty()) root.insert("title", s.title);
   root.insert("fluid", toml::table{{"density", s.fluid.density}, {"viscosity", s.fluid.viscosity}, {"gravity", s.fluid.gravity}});
-  root.insert("tank", toml::table{{"shape", s.tank.shape}, {"length", s.tank.length}, {"height", s.tank.height}});
+  toml::table tank{{"shape", s.tank.shape}};
+  if (s.tank.shape == "polyline") {
+    toml::array pts;
+    for (const Vec2& q : s.tank.points) pts.push_back(toml::array{q.x, q.y});
+    tank.insert("points", pts);
+  } else {
+    tank.insert("length", s.tank.length);
+    tank.insert("height", s.tank.height);
+  }
+  if (s.tank.shape == "parabolic") tank.insert("coefficient", s.tank.coefficient);
+  if (s.tank.shape == "sloped" || s.tank.shape == "triangle" || s.tank.shape == "trapezoid") tank.insert("angle", s.tank.angle);
+  if (s.tank.shape == "sloped" || s.tank.shape == "trapezoid") tank.insert("bottom_width", s.tank.bottom_width);
+  root.insert("tank", tank);
   root.insert("fill", toml::table{{"depth", s.fill.depth}});
   root.insert("particles", toml::table{{"dp", s.particles.dp},
                                        {"kernel_ratio", s.particles.kernel_ratio},
@@ -327,7 +364,10 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (s.excitation.type == ExcitationType::harmonic) {
     toml::table e{{"type", "harmonic"}, {"amplitude", s.excitation.amplitude}, {"ramp", s.excitation.ramp},
                   {"phase", s.excitation.phase}, {"stop", s.excitation.stop}};
-    if (s.excitation.beta) e.insert("beta", *s.excitation.beta);
+    if (s.excitation.beta) {
+      e.insert("beta", *s.excitation.beta);
+      e.insert("beta_reference", s.excitation.beta_reference == BetaReference::thesis ? "thesis" : "modal");
+    }
     if (s.excitation.frequency) e.insert("frequency", *s.excitation.frequency);
     root.insert("excitation", e);
   }

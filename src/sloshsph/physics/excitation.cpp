@@ -28,10 +28,12 @@ BaseMotion harmonic(const ExcitationSpec& e, double t) {
 BaseMotion base_motion(const ExcitationSpec& e, double t) {
   if (e.type == ExcitationType::none) return {};
   if (e.stop >= 0.0 && t > e.stop) {
-    BaseMotion rest = harmonic(e, e.stop);
-    rest.velocity = {};
-    rest.acceleration = {};
-    return rest;
+    // After `stop` the base coasts at the velocity it had: no acceleration, so the fluid
+    // feels nothing more (a free-decay test), and the kinematics stay consistent.
+    BaseMotion coast = harmonic(e, e.stop);
+    coast.displacement += (t - e.stop) * coast.velocity;
+    coast.acceleration = {};
+    return coast;
   }
   return harmonic(e, t);
 }

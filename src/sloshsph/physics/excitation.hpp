@@ -20,8 +20,8 @@ struct BaseMotion {
 };
 
 // X(t) = r(t) * A sin(omega t + phase), with the smooth ramp r(t) = (1 - cos(pi t / T_ramp)) / 2
-// for t < T_ramp, 1 after; derivatives are exact (product rule). After `stop` the base
-// rests where it is (a free-decay test): velocity and acceleration are zero.
+// for t < T_ramp, 1 after; derivatives are exact (product rule). After `stop` the base coasts
+// at the velocity it had (zero acceleration: the fluid then decays freely).
 BaseMotion base_motion(const ExcitationSpec& e, double t);
 
 // The tank-frame body force of a base motion (physics/frame.hpp): gravity and the

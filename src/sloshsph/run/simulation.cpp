@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/linear/closed_form.hpp"
+#include "sloshsph/linear/modal.hpp"
 #include "sloshsph/linear/rectangular.hpp"
 #include "sloshsph/observe/probes.hpp"
 #include "sloshsph/sph/kernel.hpp"
@@ -13,14 +15,23 @@
 namespace sloshsph {
 
 double first_sloshing_omega(const CaseSpec& spec) {
-  return rectangular_sloshing_omega(spec.tank.length, spec.fill.depth, spec.fluid.gravity);
+  if (spec.tank.shape == "rectangle")
+    return rectangular_sloshing_omega(spec.tank.length, spec.fill.depth, spec.fluid.gravity);  // exact
+  const TankGeometry tank = make_tank(spec.tank, spec.where("tank.shape"));
+  return first_sloshing_omega(tank, spec.fill.depth, spec.fluid.gravity);
+}
+
+double reference_omega(const CaseSpec& spec) {
+  if (spec.excitation.beta_reference == BetaReference::thesis)
+    return thesis_closed_form_omega(spec.tank, spec.fill.depth, spec.fluid.gravity);
+  return first_sloshing_omega(spec);
 }
 
 CaseSpec resolve_case(CaseSpec spec) {
   ExcitationSpec& e = spec.excitation;
   if (e.type == ExcitationType::harmonic) {
     if (e.frequency) e.omega = 2.0 * std::numbers::pi * *e.frequency;
-    else e.omega = *e.beta * first_sloshing_omega(spec);
+    else e.omega = *e.beta * reference_omega(spec);
     if (!(e.omega > 0.0) || !std::isfinite(e.omega))
       throw InputError(spec.where("excitation.beta"), "excitation.beta", "gives no positive excitation frequency");
   }
@@ -53,7 +64,8 @@ void Simulation::build_columns() {
                                    {"E_pot", "J/m"},
                                    {"leaked", "1"},
                                    {"max_speed", "m/s"},
-                                   {"dt", "s"}});
+                                   {"dt", "s"},
+                                   {"ppe_iterations", "1"}});
 }
 
 // time.settle: before t = 0 the fluid settles under gravity alone (no excitation) while its
@@ -218,7 +230,8 @@ std::vector<double> Simulation::sample() {
     e_pot += p.mass * spec_.fluid.gravity * (p.position[i].y - scene_.tank->y_bottom);
   }
   v.insert(v.end(), {f_w.x, f_w.x - mass * a_mean, f_w.y, work_on_fluid_, mass, e_kin, e_pot,
-                     static_cast<double>(leaks_.size()), max_speed_, last_dt_});
+                     static_cast<double>(leaks_.size()), max_speed_, last_dt_,
+                     static_cast<double>(scheme_.diagnostics().solver_iterations)});
   acc_dt_ = 0.0;
   acc_wall_force_ = {};
   acc_base_acceleration_ = 0.0;

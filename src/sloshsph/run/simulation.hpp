@@ -17,8 +17,13 @@ namespace sloshsph {
 // from `beta` times the tank's first linear sloshing frequency. Throws InputError.
 CaseSpec resolve_case(CaseSpec spec);
 
-// First linear sloshing angular frequency of the case's tank and fill (rad/s).
+// First linear sloshing angular frequency of the case's tank and fill (rad/s): the closed
+// form for a rectangle, the modal solver (linear/modal.hpp) for any other section.
 double first_sloshing_omega(const CaseSpec& spec);
+
+// The frequency `beta` refers to: first_sloshing_omega, or the thesis's closed form when
+// excitation.beta_reference = "thesis".
+double reference_omega(const CaseSpec& spec);
 
 struct Column {
   std::string name;

@@ -416,7 +416,8 @@ void WcsphScheme::initialise(Particles& p, const FrameForce& frame) {
 // frame.at(r, u) is added where it is used, with the frame of this step (the driver passes
 // the frame at the middle of the step), so an imposed motion enters at second order.
 
-// Position Verlet (Monaghan 2005, sec. 7.5; "drift-kick-drift"):
+// Position Verlet, the symplectic "drift-kick-drift" scheme (Monaghan 2005, Rep. Prog. Phys. 68,
+// section on time stepping; velocity-dependent forces take a predicted half-step velocity):
 //   r^{n+1/2} = r^n + dt/2 u^n
 //   evaluate at r^{n+1/2}, with u^{n+1/2} ~ u^n + dt/2 a^{n-1/2} and rho^{n+1/2} = rho^n + dt/2 D^{n-1/2}
 //   (the rates of the last evaluation, for the velocity- and density-dependent terms)
@@ -453,7 +454,7 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
   diagnostics_.wall_force = last_wall_force_;
 }
 
-// Leap-frog (Dincer 2019; Monaghan 1989) in its kick-drift-kick form:
+// Leap-frog (Dincer 2019 sec. 2.1) in its kick-drift-kick (velocity Verlet) form:
 //   u^{n+1/2} = u^n + dt/2 a^n,  rho^{n+1/2} = rho^n + dt/2 D^n
 //   r^{n+1} = r^n + dt (u^{n+1/2} + u_xsph^n)
 //   evaluate at r^{n+1}, with u^{n+1} ~ u^{n+1/2} + dt/2 a^n and rho^{n+1} ~ rho^{n+1/2} + dt/2 D^n

@@ -2,7 +2,7 @@
 // Weakly compressible delta-SPH (Dincer 2019 sec. 2.1, eqs. 5-13, after Marrone et al. 2011)
 // with the options of Shao et al. 2012 (sec. 2: density re-normalisation, kernel gradient
 // correction, Smagorinsky turbulence, coupled dynamic solid boundary). WcsphSpec
-// (core/case_spec.hpp) selects the options; docs in /work/notes/wcsph_results.md.
+// (core/case_spec.hpp) selects the options.
 //
 // Per fluid particle i (V_j = m / rho_j, grad W = grad_i W_ij, r_ij = r_i - r_j, u_ij = u_i - u_j):
 //   drho_i/dt = sum_j m u_ij . grad W  +  delta h c0 sum_{j fluid} V_j psi_ij . grad W     (eqs. 5, 7)
@@ -69,11 +69,13 @@ class WcsphScheme {
   void step(Particles& particles, const StepInput& input);
 
   // The largest stable step for the current state:
-  //   dt = min( cfl h / (c0 + u_max),          acoustic CFL (Monaghan 1992; covers the artificial viscosity)
+  //   dt = min( cfl h / (c0 + u_max),          acoustic CFL condition (covers the artificial viscosity)
   //             cfl sqrt(h / a_max),            force condition, a_max = max |du/dt| of the last evaluation
   //                                             (with the body force frame.at(r, u))
-  //             0.125 h^2 / (nu + nu_t,max) )   viscous diffusion (Morris et al. 1997)
-  // with cfl = WcsphSpec::cfl.
+  //             0.125 h^2 / (nu + nu_t,max) )   viscous diffusion (Morris et al. 1997); nu counts only
+  //                                             when the laminar viscosity is used (artificial_viscosity == 0)
+  // with cfl = WcsphSpec::cfl. The artificial viscosity's diffusion limit, 0.125 h^2 / nu_av with
+  // nu_av = alpha h c0 / 8, is h / (alpha c0): 1/alpha times h / c0, so it never binds.
   double stable_dt(const Particles& particles, const FrameForce& frame) const;
 
   double sound_speed() const { return c0_; }

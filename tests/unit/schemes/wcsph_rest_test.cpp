@@ -14,7 +14,8 @@ namespace sloshsph {
 namespace {
 
 struct RestResult {
-  double mean_pressure = 0.0;     // Pa, particles near mid-depth, averaged over the last 0.2 s
+  double mean_pressure = 0.0;     // Pa, the particle row at mid-depth (|y - H/2| < dp/2, 0.1 < x < 0.4 m),
+                                  // averaged over the last 0.2 s
   double mean_hydrostatic = 0.0;  // Pa, rho0 g (H - y) of the same particles
   double max_speed_late = 0.0;    // m/s, max over the last 0.2 s
   double max_speed = 0.0;         // m/s, max over the run
@@ -60,7 +61,7 @@ RestResult run_rest(WallTreatment walls, double duration) {
       ++force_samples;
       for (std::size_t i = 0; i < p.n_fluid; ++i) {
         const Vec2 x = p.position[i];
-        if (std::abs(x.y - y_mid) < spec.particles.dp && x.x > 0.1 && x.x < 0.4) {
+        if (std::abs(x.y - y_mid) < 0.5 * spec.particles.dp && x.x > 0.1 && x.x < 0.4) {
           p_sum += p.pressure[i];
           ph_sum += rho_g * (H - x.y);
           ++samples;
@@ -88,17 +89,20 @@ RestResult run_rest(WallTreatment walls, double duration) {
   return r;
 }
 
-// Reference: hydrostatics, p = rho0 g (H - y) at mid-depth, time-averaged over the last 0.2 s of
-// a 1 s run; tolerance 3%. The fluid should stay still: the max speed over the last 0.2 s is
-// required below 1% of sqrt(g H) = 1.57 m/s (it measures the start-up acoustic ripple, see
-// the printed value and /work/notes/wcsph_results.md).
+// Reference: hydrostatics, p = rho0 g (H - y) at mid-depth (H = 0.25 m, the still level),
+// time-averaged over the last 0.2 s of a 1 s run; tolerance 3%. (Measured: +1.5%, the lattice
+// moment of the kernel at h = 1.4 dp: the uncorrected pressure gradient is ~1.5% weak, so the
+// balance needs a 1.5% larger pressure; see sph/operators.hpp.) The fluid should stay still:
+// the max speed over the last 0.2 s is required below 1% of sqrt(g H) = 1.57 m/s (measured
+// ~0.003 m/s, the decaying start-up acoustic ripple). Momentum balance: averaged over 0.2 s
+// the walls carry the weight of the fluid (the fluid's momentum change over 0.2 s is
+// negligible); tolerance 1%.
 void check_rest(WallTreatment walls) {
   const RestResult r = run_rest(walls, 1.0);
   ASSERT_TRUE(r.finite);
   EXPECT_NEAR(r.mean_pressure, r.mean_hydrostatic, 0.03 * r.mean_hydrostatic);
   EXPECT_LT(r.max_speed_late, 0.01 * std::sqrt(9.81 * 0.25));
-  // The walls carry the weight of the fluid at rest (time-averaged); 3%.
-  EXPECT_NEAR(r.mean_wall_force_y, r.fluid_weight, 0.03 * r.fluid_weight);
+  EXPECT_NEAR(r.mean_wall_force_y, r.fluid_weight, 0.01 * r.fluid_weight);
 }
 
 TEST(WcsphRest, AdamiWallsHoldHydrostaticPressure) { check_rest(WallTreatment::adami); }

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Configures and builds sloshsph (Release) into build/. Used by quickstart.sh and test.sh.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${SLOSHSPH_BUILD_DIR:-$root/build}
+jobs=${SLOSHSPH_JOBS:-$(nproc)}
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$build" -j "$jobs"

@@ -1,0 +1,64 @@
+#pragma once
+// Runs a case in memory and keeps its time series, for the validation tests.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sloshsph/io/case_reader.hpp"
+#include "sloshsph/run/simulation.hpp"
+
+namespace sloshsph::testing {
+
+inline std::string case_path(const std::string& name) { return std::string(SLOSHSPH_SOURCE_DIR) + "/cases/" + name; }
+
+struct RunResult {
+  std::map<std::string, std::vector<double>> series;  // column name -> samples
+  std::size_t leaked = 0;
+  double max_speed_end = 0.0;
+  double wall_seconds = 0.0;
+  std::size_t steps = 0;
+  const std::vector<double>& operator[](const std::string& c) const { return series.at(c); }
+};
+
+// Reads cases/<name> with the overrides, runs it to time.end sampling every
+// output.sample_interval, and returns the columns. `inspect` sees the final simulation.
+template <class Inspect>
+RunResult run_case_in_memory(const std::string& name, const std::vector<std::string>& overrides, Inspect&& inspect) {
+  const CaseSpec spec = resolve_case(read_case_file(case_path(name), overrides));
+  const auto start = std::chrono::steady_clock::now();
+  Simulation sim(spec);
+  RunResult r;
+  auto record = [&](const std::vector<double>& row) {
+    for (std::size_t k = 0; k < row.size(); ++k) r.series[sim.columns()[k].name].push_back(row[k]);
+  };
+  record(sim.sample());
+  double next = spec.output.sample_interval;
+  while (!sim.finished()) {
+    sim.step();
+    if (sim.time() >= next - 1e-9 || sim.finished()) {
+      record(sim.sample());
+      while (next <= sim.time() + 1e-9) next += spec.output.sample_interval;
+    }
+  }
+  r.leaked = sim.leaked();
+  r.max_speed_end = sim.max_speed();
+  r.steps = sim.steps();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  inspect(sim);
+  return r;
+}
+
+inline RunResult run_case_in_memory(const std::string& name, const std::vector<std::string>& overrides) {
+  return run_case_in_memory(name, overrides, [](const Simulation&) {});
+}
+
+// Records a measured number in the test output (and the XML report) for docs/validation.md.
+inline void report(const std::string& key, double value) {
+  ::testing::Test::RecordProperty(key, std::to_string(value));
+  std::printf("  measured %s = %.6g\n", key.c_str(), value);
+}
+
+}  // namespace sloshsph::testing

@@ -1,0 +1,65 @@
+// Sloshing in rectangular tanks: linear frequency and the Liu & Lin (2008) resonance case.
+#include <cmath>
+#include <numbers>
+
+#include "run_support.hpp"
+#include "sloshsph/analysis/spectrum.hpp"
+#include "sloshsph/linear/rectangular.hpp"
+
+namespace sloshsph {
+namespace {
+
+using testing::report;
+using testing::run_case_in_memory;
+
+// Samples of column `c` with time in [t0, t1].
+std::pair<std::vector<double>, std::vector<double>> window(const testing::RunResult& r, const std::string& c, double t0,
+                                                          double t1) {
+  std::vector<double> t, x;
+  for (std::size_t k = 0; k < r["time"].size(); ++k)
+    if (r["time"][k] >= t0 && r["time"][k] <= t1) {
+      t.push_back(r["time"][k]);
+      x.push_back(r[c][k]);
+    }
+  return {t, x};
+}
+
+// cases/linear_sloshing.toml: two periods of excitation, then free decay.
+// Reference: linear theory omega1 = sqrt(pi g / L tanh(pi h / L)) (thesis eq. 4.29).
+// Tolerance: the free-decay period (mean up-crossing period of both gauges, after the
+// excitation) within 3% of 2 pi / omega1.
+TEST(Validation, LinearSloshingFrequency) {
+  const auto r = run_case_in_memory("linear_sloshing.toml", {});
+  const double omega1 = rectangular_sloshing_omega(0.5, 0.25, 9.81);
+  const double t_stop = 1.6708;
+  for (const char* gauge : {"eta:left", "eta:right"}) {
+    const auto [t, x] = window(r, gauge, t_stop + 0.2, 6.0);
+    const double period = zero_crossing_period(t, x);
+    const double omega = 2.0 * std::numbers::pi / period;
+    report(std::string("free_decay_omega_") + (gauge + 4), omega);
+    report(std::string("free_decay_omega_error_") + (gauge + 4), omega / omega1 - 1.0);
+    EXPECT_NEAR(omega / omega1, 1.0, 0.03) << gauge << ": omega = " << omega << ", omega1 = " << omega1;
+  }
+  EXPECT_EQ(r.leaked, 0u);
+}
+
+// cases/liu_lin_2008.toml (thesis 2.6.2): L = 0.57 m, h = 0.15 m, X0/L = 0.0088, beta = 1, 7 s.
+// Tolerances: no particle leaves the tank; the gauge 20 mm from the left wall oscillates at
+// the excitation frequency (FFT peak of the last 4 s within 3%).
+TEST(Validation, LiuLin2008Resonance) {
+  const auto r = run_case_in_memory("liu_lin_2008.toml", {"output.snapshot_interval=0"});
+  EXPECT_EQ(r.leaked, 0u);
+  const double omega_e = rectangular_sloshing_omega(0.57, 0.15, 9.81);
+  const auto [t, x] = window(r, "eta:left", 3.0, 7.0);
+  const double f = dominant_frequency_fft(x, t[1] - t[0]);
+  report("liu_lin_gauge_frequency_hz", f);
+  report("liu_lin_gauge_frequency_error", 2.0 * std::numbers::pi * f / omega_e - 1.0);
+  EXPECT_NEAR(2.0 * std::numbers::pi * f / omega_e, 1.0, 0.03);
+  double peak = 0.0;
+  for (double v : x) peak = std::max(peak, std::abs(v));
+  report("liu_lin_gauge_peak_m", peak);
+  report("liu_lin_wall_seconds", r.wall_seconds);
+}
+
+}  // namespace
+}  // namespace sloshsph
