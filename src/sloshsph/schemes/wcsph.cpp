@@ -74,7 +74,7 @@ WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
 std::size_t WcsphScheme::memory_bytes() const {
   const WcsphData& d = data_;
   const std::size_t n = d.id.capacity();
-  const std::size_t per_fluid = sizeof(std::int32_t) + 7 * sizeof(Vec2) + 2 * sizeof(double) + sizeof(Mat2) +
+  const std::size_t per_fluid = sizeof(std::int32_t) + 6 * sizeof(Vec2) + 2 * sizeof(double) + sizeof(Mat2) +
                                 sizeof(SymTensor2);
   return n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
          (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) + repulsive_.capacity() +
