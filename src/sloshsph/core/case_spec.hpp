@@ -2,6 +2,7 @@
 // The plain, validated description of one simulation, in SI units.
 // io/case_reader fills it from a TOML case file; every later layer reads only this.
 // docs/case-format.md documents each field under its TOML key.
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -108,7 +109,13 @@ struct TimeSpec {
   double settle = 0.0;       // s, damped settling at rest before t = 0 (0: none)
 };
 
-enum class ExcitationType { none, harmonic };
+// Imposed motion of the tank (thesis 2.6.2, 4.4.2; Shao et al. 3.3; Dincer 3).
+//  harmonic: X(t) = amplitude sin(omega t + phase), horizontal
+//  pitch:    theta(t) = angle sin(omega t + phase) about `pivot`
+//  record:   a ground-acceleration record (PEER AT2 in g, or CSV time,value)
+//  pulse:    one-cycle sine or cosine acceleration pulse (Dincer 2019, 3.1)
+//  noise:    band-limited white-noise acceleration (deterministic from its seed)
+enum class ExcitationType { none, harmonic, pitch, record, pulse, noise };
 
 // What `beta` is relative to: the first natural frequency from the modal solver (exact linear
 // theory for the section) or the thesis's closed forms (eqs. 3.29-3.36, 4.29), to reproduce its set-ups.
@@ -116,14 +123,32 @@ enum class BetaReference { modal, thesis };
 
 struct ExcitationSpec {
   ExcitationType type = ExcitationType::none;
-  double amplitude = 0.0;            // m
+  double amplitude = 0.0;            // m (harmonic)
+  double angle = 0.0;                // rad (pitch; given in degrees in the case)
+  Vec2 pivot;                        // m, tank frame (pitch)
   std::optional<double> frequency;   // Hz, as given
   std::optional<double> beta;        // ratio to the tank's first linear sloshing frequency
   BetaReference beta_reference = BetaReference::modal;
-  double omega = 0.0;                // rad/s, resolved (from frequency or beta)
+  double omega = 0.0;                // rad/s, resolved (from frequency, omega or beta)
   double ramp = 0.0;                 // s, smooth ramp-up time
-  double phase = 0.0;                // rad, X(t) = A sin(omega t + phase)
-  double stop = -1.0;                // s, motion stops after this time (< 0: never)
+  double phase = 0.0;                // rad
+  double stop = -1.0;                // s, harmonic/pitch motion stops after this time (< 0: never)
+  // record
+  std::string file;                  // resolved path of the record
+  std::string format;                // "at2" or "csv"
+  double scale = 1.0;                // multiplies the record (after unit conversion)
+  double time_scale = 1.0;           // CSV: multiplies the time column to give seconds
+  double value_unit = 1.0;           // CSV: multiplies the values to give m/s^2 (9.80665 for g)
+  bool baseline_correction = true;   // remove the drift velocity so the base ends at rest
+  double start = 0.0;                // s, the record or pulse starts at this time
+  // pulse
+  std::string shape = "sine";        // "sine" or "cosine"
+  double acceleration = 0.0;         // m/s^2, peak acceleration of a pulse
+  double period = 0.0;               // s, pulse period
+  // noise
+  std::uint64_t seed = 1;
+  double band_low = 0.05, band_high = 0.5;  // Hz
+  double rms = 0.0;                  // m/s^2, RMS acceleration of the noise
 };
 
 struct GaugeSpec {

@@ -71,9 +71,9 @@ ParticleSpec read_particles(TableReader& r) {
   return p;
 }
 
-SchemeSpec read_scheme(TableReader& r) {
-  SchemeSpec s;
-  s.type = r.choice("type", s.type, {"isph"});
+// Keys of one scheme are read only for that scheme: an ISPH key in a WCSPH case (or the
+// other way round) is an unknown key.
+void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.alpha = r.in_range("alpha", s.alpha, 0.0, 1.0);
   s.pressure = r.choice("pressure", "implicit", {"explicit", "implicit"}) == "explicit" ? PressureSolve::explicit_update
                                                                                          : PressureSolve::implicit_krylov;
@@ -92,6 +92,33 @@ SchemeSpec read_scheme(TableReader& r) {
   s.ct = r.positive("ct", s.ct);
   s.solver_tolerance = r.in_range("solver_tolerance", s.solver_tolerance, 1e-14, 1e-1);
   s.solver_max_iterations = static_cast<int>(r.integer("solver_max_iterations", s.solver_max_iterations, 1, 1000000));
+}
+
+void read_wcsph_keys(TableReader& r, SchemeSpec& s) {
+  WcsphSpec& w = s.wcsph;
+  w.sound_speed = r.non_negative("sound_speed", w.sound_speed);
+  w.max_density_variation = r.in_range("max_density_variation", w.max_density_variation, 1e-4, 0.1);
+  w.delta = r.in_range("delta", w.delta, 0.0, 1.0);
+  w.artificial_viscosity = r.in_range("artificial_viscosity", w.artificial_viscosity, 0.0, 1.0);
+  w.xsph = r.in_range("xsph", w.xsph, 0.0, 1.0);
+  w.kernel_gradient_correction = r.boolean("kernel_gradient_correction", w.kernel_gradient_correction);
+  w.shepard_interval = static_cast<int>(r.integer("shepard_interval", w.shepard_interval, 0, 100000));
+  const std::string turb = r.choice("turbulence", "none", {"none", "sps", "smagorinsky"});
+  w.turbulence = turb == "sps" ? WcsphTurbulence::sps : turb == "smagorinsky" ? WcsphTurbulence::smagorinsky
+                                                                             : WcsphTurbulence::none;
+  w.smagorinsky = r.in_range("smagorinsky", w.smagorinsky, 0.0, 1.0);
+  w.walls = r.choice("walls", "adami", {"adami", "repulsive"}) == "repulsive" ? WallTreatment::repulsive
+                                                                             : WallTreatment::adami;
+  w.integrator = r.choice("integrator", "symplectic", {"symplectic", "leapfrog"}) == "leapfrog" ? Integrator::leapfrog
+                                                                                               : Integrator::symplectic;
+  w.cfl = r.in_range("cfl", w.cfl, 0.01, 1.0);
+}
+
+SchemeSpec read_scheme(TableReader& r) {
+  SchemeSpec s;
+  s.type = r.choice("type", s.type, {"isph", "wcsph"});
+  if (s.type == "isph") read_isph_keys(r, s);
+  else read_wcsph_keys(r, s);
   s.neighbour_skin = r.in_range("neighbour_skin", s.neighbour_skin, 0.0, 1.0);
   r.finish();
   return s;
@@ -108,26 +135,77 @@ TimeSpec read_time(TableReader& r) {
   return t;
 }
 
-ExcitationSpec read_excitation(TableReader& r) {
-  ExcitationSpec e;
-  const std::string type = r.choice("type", "harmonic", {"none", "harmonic"});
-  if (type == "none") {
-    r.finish();
-    return e;
-  }
-  e.type = ExcitationType::harmonic;
-  if (!r.has("amplitude")) r.fail("amplitude", "is required for a harmonic excitation (m)");
-  e.amplitude = r.non_negative("amplitude", 0.0);
+// Frequency of a periodic excitation: exactly one of frequency (Hz), omega (rad/s), beta.
+void read_frequency(TableReader& r, ExcitationSpec& e) {
   e.frequency = r.optional_positive("frequency");
+  const std::optional<double> omega = r.optional_positive("omega");
   e.beta = r.optional_positive("beta");
-  if (e.frequency && e.beta) r.fail("beta", "give either 'frequency' (Hz) or 'beta', not both");
-  if (!e.frequency && !e.beta) r.fail("frequency", "a harmonic excitation needs 'frequency' (Hz) or 'beta' (ratio to the first sloshing frequency)");
+  const int given = (e.frequency ? 1 : 0) + (omega ? 1 : 0) + (e.beta ? 1 : 0);
+  if (given > 1) r.fail(e.beta ? "beta" : "omega", "give only one of 'frequency' (Hz), 'omega' (rad/s) and 'beta'");
+  if (given == 0)
+    r.fail("frequency", "a periodic excitation needs 'frequency' (Hz), 'omega' (rad/s) or 'beta' (ratio to the first "
+                        "sloshing frequency)");
+  if (omega) e.frequency = *omega / (2.0 * 3.141592653589793238);
   if (e.beta)
     e.beta_reference = r.choice("beta_reference", "modal", {"modal", "thesis"}) == "thesis" ? BetaReference::thesis
                                                                                            : BetaReference::modal;
   e.ramp = r.non_negative("ramp", e.ramp);
   e.phase = r.number("phase", e.phase);
   e.stop = r.number("stop", e.stop);
+}
+
+// A path in the case is relative to the case file's folder.
+std::string resolve_path(TableReader& r, const std::string& key) {
+  const std::string given = r.string(key);
+  std::filesystem::path p(given);
+  if (p.is_relative() && r.file().find('<') == std::string::npos)
+    p = std::filesystem::path(r.file()).parent_path() / p;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec)) r.fail(key, "no such file: " + p.string());
+  return p.lexically_normal().string();
+}
+
+ExcitationSpec read_excitation(TableReader& r) {
+  ExcitationSpec e;
+  const std::string type = r.choice("type", "harmonic", {"none", "harmonic", "pitch", "record", "pulse", "noise"});
+  if (type == "harmonic") {
+    e.type = ExcitationType::harmonic;
+    if (!r.has("amplitude")) r.fail("amplitude", "is required for a harmonic excitation (m)");
+    e.amplitude = r.non_negative("amplitude", 0.0);
+    read_frequency(r, e);
+  } else if (type == "pitch") {
+    e.type = ExcitationType::pitch;
+    if (!r.has("angle")) r.fail("angle", "is required for a pitch excitation (degrees)");
+    e.angle = r.in_range("angle", 0.0, 0.0, 45.0) * 3.141592653589793238 / 180.0;
+    e.pivot = r.point("pivot");
+    read_frequency(r, e);
+  } else if (type == "record") {
+    e.type = ExcitationType::record;
+    e.file = resolve_path(r, "file");
+    const std::string ext = std::filesystem::path(e.file).extension().string();
+    e.format = r.choice("format", ext == ".csv" || ext == ".txt" ? "csv" : "at2", {"at2", "csv"});
+    e.scale = r.number("scale", e.scale);
+    if (e.format == "csv") {
+      e.value_unit = r.choice("unit", "m/s2", {"m/s2", "g"}) == "g" ? 9.80665 : 1.0;
+      e.time_scale = r.positive("time_scale", e.time_scale);
+    }
+    e.baseline_correction = r.boolean("baseline_correction", e.baseline_correction);
+    e.start = r.non_negative("start", e.start);
+  } else if (type == "pulse") {
+    e.type = ExcitationType::pulse;
+    e.shape = r.choice("shape", e.shape, {"sine", "cosine"});
+    e.acceleration = r.number("acceleration");
+    e.period = r.positive("period");
+    e.start = r.non_negative("start", e.start);
+  } else if (type == "noise") {
+    e.type = ExcitationType::noise;
+    e.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, 9007199254740991LL));
+    const std::vector<Vec2> band = r.has("band") ? std::vector<Vec2>{r.point("band")} : std::vector<Vec2>{{0.05, 0.5}};
+    e.band_low = band[0].x;
+    e.band_high = band[0].y;
+    if (!(e.band_low > 0.0 && e.band_high > e.band_low)) r.fail("band", "expected [f_low, f_high] with 0 < f_low < f_high (Hz)");
+    e.rms = r.positive("rms");
+  }
   r.finish();
   return e;
 }
@@ -326,6 +404,94 @@ snapshot_interval = 0.1
   return text;
 }
 
+static toml::table scheme_table(const SchemeSpec& x) {
+  toml::table t{{"type", x.type}, {"neighbour_skin", x.neighbour_skin}};
+  if (x.type == "isph") {
+    t.insert("alpha", x.alpha);
+    t.insert("pressure", x.pressure == PressureSolve::implicit_krylov ? "implicit" : "explicit");
+    t.insert("free_surface", x.free_surface == FreeSurfaceModel::thesis ? "thesis" : "air");
+    t.insert("free_surface_threshold", x.free_surface_threshold);
+    t.insert("turbulence", x.turbulence);
+    t.insert("smagorinsky", x.smagorinsky);
+    t.insert("ct", x.ct);
+    t.insert("solver_tolerance", x.solver_tolerance);
+    t.insert("solver_max_iterations", x.solver_max_iterations);
+    return t;
+  }
+  const WcsphSpec& w = x.wcsph;
+  t.insert("sound_speed", w.sound_speed);
+  t.insert("max_density_variation", w.max_density_variation);
+  t.insert("delta", w.delta);
+  t.insert("artificial_viscosity", w.artificial_viscosity);
+  t.insert("xsph", w.xsph);
+  t.insert("kernel_gradient_correction", w.kernel_gradient_correction);
+  t.insert("shepard_interval", w.shepard_interval);
+  t.insert("turbulence", w.turbulence == WcsphTurbulence::sps           ? "sps"
+                         : w.turbulence == WcsphTurbulence::smagorinsky ? "smagorinsky"
+                                                                        : "none");
+  t.insert("smagorinsky", w.smagorinsky);
+  t.insert("walls", w.walls == WallTreatment::repulsive ? "repulsive" : "adami");
+  t.insert("integrator", w.integrator == Integrator::leapfrog ? "leapfrog" : "symplectic");
+  t.insert("cfl", w.cfl);
+  return t;
+}
+
+static toml::table excitation_table(const ExcitationSpec& x) {
+  toml::table e;
+  auto periodic = [&]() {
+    if (x.beta) {
+      e.insert("beta", *x.beta);
+      e.insert("beta_reference", x.beta_reference == BetaReference::thesis ? "thesis" : "modal");
+    } else if (x.frequency) {
+      e.insert("frequency", *x.frequency);
+    }
+    e.insert("ramp", x.ramp);
+    e.insert("phase", x.phase);
+    e.insert("stop", x.stop);
+  };
+  switch (x.type) {
+    case ExcitationType::harmonic:
+      e.insert("type", "harmonic");
+      e.insert("amplitude", x.amplitude);
+      periodic();
+      break;
+    case ExcitationType::pitch:
+      e.insert("type", "pitch");
+      e.insert("angle", x.angle * 180.0 / 3.141592653589793238);
+      e.insert("pivot", toml::array{x.pivot.x, x.pivot.y});
+      periodic();
+      break;
+    case ExcitationType::record:
+      e.insert("type", "record");
+      e.insert("file", x.file);
+      e.insert("format", x.format);
+      e.insert("scale", x.scale);
+      if (x.format == "csv") {
+        e.insert("unit", x.value_unit == 1.0 ? "m/s2" : "g");
+        e.insert("time_scale", x.time_scale);
+      }
+      e.insert("baseline_correction", x.baseline_correction);
+      e.insert("start", x.start);
+      break;
+    case ExcitationType::pulse:
+      e.insert("type", "pulse");
+      e.insert("shape", x.shape);
+      e.insert("acceleration", x.acceleration);
+      e.insert("period", x.period);
+      e.insert("start", x.start);
+      break;
+    case ExcitationType::noise:
+      e.insert("type", "noise");
+      e.insert("seed", static_cast<std::int64_t>(x.seed));
+      e.insert("band", toml::array{x.band_low, x.band_high});
+      e.insert("rms", x.rms);
+      break;
+    case ExcitationType::none:
+      break;
+  }
+  return e;
+}
+
 std::string resolved_case_toml(const CaseSpec& s) {
   toml::table root;
   if (!s.title.empty()) root.insert("title", s.title);
@@ -348,29 +514,10 @@ std::string resolved_case_toml(const CaseSpec& s) {
                                        {"kernel_ratio", s.particles.kernel_ratio},
                                        {"wall_layers", s.particles.wall_layers},
                                        {"kernel", s.particles.kernel == KernelType::cubic_spline ? "cubic_spline" : "wendland"}});
-  root.insert("scheme", toml::table{{"type", s.scheme.type},
-                                    {"alpha", s.scheme.alpha},
-                                    {"pressure", s.scheme.pressure == PressureSolve::implicit_krylov ? "implicit" : "explicit"},
-                                    {"free_surface", s.scheme.free_surface == FreeSurfaceModel::thesis ? "thesis" : "air"},
-                                    {"free_surface_threshold", s.scheme.free_surface_threshold},
-                                    {"turbulence", s.scheme.turbulence},
-                                    {"smagorinsky", s.scheme.smagorinsky},
-                                    {"ct", s.scheme.ct},
-                                    {"solver_tolerance", s.scheme.solver_tolerance},
-                                    {"solver_max_iterations", s.scheme.solver_max_iterations},
-                                    {"neighbour_skin", s.scheme.neighbour_skin}});
+  root.insert("scheme", scheme_table(s.scheme));
   root.insert("time", toml::table{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl},
                                   {"settle", s.time.settle}});
-  if (s.excitation.type == ExcitationType::harmonic) {
-    toml::table e{{"type", "harmonic"}, {"amplitude", s.excitation.amplitude}, {"ramp", s.excitation.ramp},
-                  {"phase", s.excitation.phase}, {"stop", s.excitation.stop}};
-    if (s.excitation.beta) {
-      e.insert("beta", *s.excitation.beta);
-      e.insert("beta_reference", s.excitation.beta_reference == BetaReference::thesis ? "thesis" : "modal");
-    }
-    if (s.excitation.frequency) e.insert("frequency", *s.excitation.frequency);
-    root.insert("excitation", e);
-  }
+  if (s.excitation.type != ExcitationType::none) root.insert("excitation", excitation_table(s.excitation));
   toml::array gauges, pressures;
   for (const auto& g : s.gauges) gauges.push_back(toml::table{{"name", g.name}, {"x", g.x}});
   for (const auto& p : s.pressure_probes)
@@ -387,8 +534,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
   std::ostringstream out;
   out << "# Resolved case: every key with its value in force (defaults filled in).\n";
   out << "# Source: " << s.source << "\n";
-  if (s.excitation.type == ExcitationType::harmonic)
-    out << "# Excitation angular frequency in force: " << s.excitation.omega << " rad/s\n";
+  if (s.excitation.omega > 0.0) out << "# Excitation angular frequency in force: " << s.excitation.omega << " rad/s\n";
   out << "\n" << root << "\n";
   return out.str();
 }

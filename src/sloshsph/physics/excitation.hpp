@@ -1,9 +1,10 @@
 #pragma once
-// Imposed motion of the tank (the base). In the tank frame it enters the fluid
-// as the body force -X''(t) (DESIGN: "the tank frame").
-#include "sloshsph/core/case_spec.hpp"
+// Imposed motion of the tank (the base). In the tank frame it enters the fluid as a body
+// force (physics/frame.hpp; DESIGN: "the tank frame").
 #include <cmath>
+#include <memory>
 
+#include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/physics/frame.hpp"
 
@@ -19,10 +20,31 @@ struct BaseMotion {
   Vec2 pivot;                         // m, tank frame: the axis of the pitch
 };
 
-// X(t) = r(t) * A sin(omega t + phase), with the smooth ramp r(t) = (1 - cos(pi t / T_ramp)) / 2
-// for t < T_ramp, 1 after; derivatives are exact (product rule). After `stop` the base coasts
-// at the velocity it had (zero acceleration: the fluid then decays freely).
-BaseMotion base_motion(const ExcitationSpec& e, double t);
+// The base motion of an excitation at any time, with exactly consistent displacement,
+// velocity and acceleration. Built once per run: record files are read and integrated, noise
+// generated, at construction (InputError for a bad record, naming excitation.file).
+//  harmonic: X = r(t) A sin(w t + phase), r(t) = (1 - cos(pi t / T_ramp)) / 2 for t < T_ramp
+//            (1 after), exact derivatives (product rule); after `stop` the base coasts at the
+//            velocity it had (zero acceleration: the fluid then decays freely).
+//  pitch:    theta = r(t) theta0 sin(w t + phase) about the pivot, the same ramp and stop.
+//  record:   the record's acceleration from `start` on, integrated exactly (signals/
+//            base_motion_record.hpp), with the optional drift-velocity correction.
+//  pulse:    one-cycle sine or cosine acceleration pulse (signals/pulses.hpp).
+//  noise:    band-limited white-noise acceleration over [0, time.end], integrated as a record.
+class BaseMotionSource {
+ public:
+  BaseMotionSource() = default;
+  BaseMotionSource(const ExcitationSpec& spec, double end_time);
+  BaseMotion at(double t) const;
+  // Largest |base acceleration| over the motion (sampled), for time-step and sound-speed bounds.
+  double peak_acceleration() const { return peak_acceleration_; }
+
+ private:
+  struct Record;
+  ExcitationSpec spec_;
+  std::shared_ptr<const Record> record_;
+  double peak_acceleration_ = 0.0;
+};
 
 // The tank-frame body force of a base motion (physics/frame.hpp): gravity and the
 // translational acceleration turned into tank axes, plus the rotation terms.

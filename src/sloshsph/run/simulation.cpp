@@ -42,10 +42,11 @@ Simulation::Simulation(const CaseSpec& spec)
     : spec_(spec),
       scene_(build_scene(spec)),
       container_(*scene_.tank, 0.5 * spec.particles.dp, (spec.particles.wall_layers + 2) * spec.particles.dp),
+      base_(spec.excitation, spec.time.end),
       scheme_(spec, scene_.h) {
   speed_limit_ = spec_.run.max_speed_factor * std::sqrt(spec_.fluid.gravity * spec_.fill.depth);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
-  scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_motion(spec_.excitation, 0.0)));
+  scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
   settle();
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
   build_columns();
@@ -77,16 +78,17 @@ void Simulation::build_columns() {
 void Simulation::settle() {
   const double duration = spec_.time.settle;
   if (duration <= 0.0) return;
-  const double dt = spec_.time.dt;
-  const double factor = std::exp(-dt / (0.1 * duration));
+  const double tau = 0.1 * duration;
   StepInput in;
-  in.dt = dt;
-  in.frame = frame_force(spec_.fluid.gravity, base_motion(spec_.excitation, 0.0));
-  const auto steps = static_cast<std::size_t>(std::ceil(duration / dt));
+  in.frame = frame_force(spec_.fluid.gravity, base_.at(0.0));
   Particles& p = scene_.particles;
-  for (std::size_t n = 0; n < steps; ++n) {
+  for (double t = 0.0; t < duration - 1e-12;) {
+    in.dt = std::min(spec_.time.dt, duration - t);
+    if (const auto stable = scheme_.stable_dt(p, in.frame)) in.dt = std::min(in.dt, *stable);
     scheme_.step(p, in);
+    const double factor = std::exp(-in.dt / tau);
     for (std::size_t i = 0; i < p.n_fluid; ++i) p.velocity[i] = factor * p.velocity[i];
+    t += in.dt;
   }
   max_speed_ = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) max_speed_ = std::max(max_speed_, norm(p.velocity[i]));
@@ -101,24 +103,27 @@ double Simulation::next_dt() const {
     const double cfl = spec_.time.cfl;
     if (max_speed_ > 0.0) dt = std::min(dt, cfl * dp / max_speed_);
     if (spec_.fluid.viscosity > 0.0) dt = std::min(dt, cfl * dp * dp / spec_.fluid.viscosity);
-    const Vec2 body = frame_force(spec_.fluid.gravity, base_motion(spec_.excitation, time_)).uniform;
+    const Vec2 body = frame_force(spec_.fluid.gravity, base_.at(time_)).uniform;
     if (norm(body) > 0.0) dt = std::min(dt, 0.25 * std::sqrt(scene_.h / norm(body)));
   }
+  // An explicit (weakly compressible) scheme takes its own CFL step; time.dt caps it.
+  if (const auto stable = scheme_.stable_dt(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(time_))))
+    dt = std::min(dt, *stable);
   return std::min(dt, spec_.time.end - time_);
 }
 
 void Simulation::step() {
   const double dt = next_dt();
   if (!(dt > 0.0)) return;
-  const BaseMotion before = base_motion(spec_.excitation, time_);
+  const BaseMotion before = base_.at(time_);
   // Body force at the middle of the step: second-order in time for the imposed motion.
-  const BaseMotion mid = base_motion(spec_.excitation, time_ + 0.5 * dt);
+  const BaseMotion mid = base_.at(time_ + 0.5 * dt);
   StepInput in;
   in.dt = dt;
   in.frame = frame_force(spec_.fluid.gravity, mid);
   scheme_.step(scene_.particles, in);
 
-  const BaseMotion after = base_motion(spec_.excitation, time_ + dt);
+  const BaseMotion after = base_.at(time_ + dt);
   const Vec2 wall_force = scheme_.diagnostics().wall_force;
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
@@ -126,7 +131,8 @@ void Simulation::step() {
   work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
 
   ++steps_;
-  time_ = spec_.time.adaptive ? time_ + dt : std::min(steps_ * spec_.time.dt, spec_.time.end);
+  const bool fixed = !spec_.time.adaptive && spec_.scheme.type == "isph";
+  time_ = fixed ? std::min(steps_ * spec_.time.dt, spec_.time.end) : time_ + dt;
   last_dt_ = dt;
   max_speed_ = scheme_.diagnostics().max_speed;
   check_state();
@@ -207,7 +213,7 @@ double Simulation::probe_pressure(std::size_t probe) const {
 
 std::vector<double> Simulation::sample() {
   const Particles& p = scene_.particles;
-  const BaseMotion m = base_motion(spec_.excitation, time_);
+  const BaseMotion m = base_.at(time_);
   std::vector<double> v = {time_, m.displacement.x, m.velocity.x, m.acceleration.x};
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) v.push_back(surface_height(k) - gauge_datum_[k]);
   if (!spec_.pressure_probes.empty()) {

@@ -9,7 +9,7 @@
 #include "sloshsph/geometry/scene.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/excitation.hpp"
-#include "sloshsph/schemes/isph.hpp"
+#include "sloshsph/schemes/scheme.hpp"
 
 namespace sloshsph {
 
@@ -56,7 +56,8 @@ class Simulation {
   const CaseSpec& spec() const { return spec_; }
   const Scene& scene() const { return scene_; }
   const Particles& particles() const { return scene_.particles; }
-  const IsphScheme& scheme() const { return scheme_; }
+  const AnyScheme& scheme() const { return scheme_; }
+  const BaseMotionSource& base() const { return base_; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
   std::size_t leaked() const { return leaks_.size(); }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
@@ -75,7 +76,8 @@ class Simulation {
   CaseSpec spec_;
   Scene scene_;
   ContainerDistance container_;
-  IsphScheme scheme_;
+  BaseMotionSource base_;
+  AnyScheme scheme_;
   double time_ = 0.0;
   std::size_t steps_ = 0;
   double last_dt_ = 0.0;

@@ -102,7 +102,7 @@ TEST(CaseReader, HarmonicNeedsAFrequency) {
   expect_error(std::string(kMinimal) + "\n[excitation]\ntype = \"harmonic\"\namplitude = 0.001\n", {},
                "excitation.frequency", "needs 'frequency'");
   expect_error(std::string(kMinimal) + "\n[excitation]\namplitude = 0.001\nbeta = 1.0\nfrequency = 1.0\n", {},
-               "excitation.beta", "not both");
+               "excitation.beta", "give only one of");
 }
 
 TEST(CaseReader, ErrorsGiveTheLine) {
