@@ -90,7 +90,8 @@ enum class ScreenModel { ergun, morison, explicit_slats };
 
 struct ScreenSpec {
   std::string name;
-  Vec2 from, to;                 // m, the element's centre line (a vertical screen: x, bottom to top)
+  Vec2 from, to;                 // m, the element's centre line
+  bool full_height = false;      // given by `x`: a vertical screen from the bottom to the top of the walls
   double solidity = 0.0;         // S = 1 - porosity (thesis eq. 2.23)
   double slat_height = 0.0;      // m, explicit slats (and S = h_slat / (h_slat + h_gap) if given)
   double slat_gap = 0.0;         // m

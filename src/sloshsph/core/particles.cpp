@@ -30,6 +30,7 @@ void Particles::permute_fluid(const std::vector<std::uint32_t>& order) {
   permute_prefix(velocity, order, s2);
   permute_prefix(normal, order, s2);
   permute_prefix(pressure, order, s1);
+  permute_prefix(pressure_back, order, s1);
   permute_prefix(density, order, s1);
   permute_prefix(id, order, si);
 }
@@ -40,6 +41,7 @@ void Particles::remove_fluid(const std::vector<std::uint8_t>& remove) {
   compact_prefix(velocity, n, remove);
   compact_prefix(normal, n, remove);
   compact_prefix(pressure, n, remove);
+  compact_prefix(pressure_back, n, remove);
   compact_prefix(density, n, remove);
   compact_prefix(id, n, remove);
   std::size_t removed = 0;

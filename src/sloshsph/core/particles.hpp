@@ -14,7 +14,8 @@ enum class ParticleKind : std::uint8_t { fluid = 0, wall = 1 };
 struct Particles {
   std::vector<Vec2> position;  // m, tank frame
   std::vector<Vec2> velocity;  // m/s, tank frame (walls: the free-slip image velocity)
-  std::vector<double> pressure;  // Pa
+  std::vector<double> pressure;  // Pa (walls: as seen from the side their normal points to)
+  std::vector<double> pressure_back;  // Pa, walls: as seen from behind (thin walls: screen slats)
   std::vector<double> density;   // kg/m^3, kernel-summed (diagnostic for fluid)
   std::vector<Vec2> normal;      // inward unit wall normal (walls only; zero for fluid)
   std::vector<std::int32_t> id;  // stable identity across re-sorting
@@ -30,6 +31,7 @@ struct Particles {
     position.resize(n);
     velocity.resize(n);
     pressure.resize(n);
+    pressure_back.resize(n);
     density.resize(n);
     normal.resize(n);
     id.resize(n);

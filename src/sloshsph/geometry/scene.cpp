@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/screens.hpp"
 
 namespace sloshsph {
 namespace {
@@ -45,9 +46,44 @@ Scene build_scene(const CaseSpec& spec) {
   scene.h = spec.particles.kernel_ratio * spec.particles.dp;
   scene.still_level = tank->y_bottom + spec.fill.depth;
 
-  const std::vector<Vec2> fluid = fill_fluid(*tank, scene.dp, spec.fill.depth);
+  std::vector<Vec2> fluid = fill_fluid(*tank, scene.dp, spec.fill.depth);
   if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
-  const std::vector<WallSample> walls = sample_walls(*tank, scene.dp, spec.particles.wall_layers);
+  std::vector<WallSample> walls = sample_walls(*tank, scene.dp, spec.particles.wall_layers);
+  const std::size_t tank_walls = walls.size();
+  // Screens: a full-height screen runs from the bottom to the top of the walls at its x;
+  // explicit slat screens are rigid wall particles (thesis 4.3.2's explicit model).
+  for (std::size_t k = 0; k < spec.screens.size(); ++k) {
+    ScreenSpec sc = spec.screens[k];
+    const std::string key = "screens." + std::to_string(k);
+    if (sc.full_height) {
+      if (sc.from.x <= tank->x_min || sc.from.x >= tank->x_max)
+        throw InputError(spec.where(key + ".x"), key + ".x", "the screen is outside the tank");
+      sc.from = {sc.from.x, tank->bottom_at(sc.from.x)};
+      sc.to = {sc.from.x, tank->y_top};
+    }
+    if (sc.model == ScreenModel::explicit_slats) {
+      SlatLayout layout = explicit_slat_layout(sc, scene.dp, *tank, spec.where(key + ".model"), key);
+      walls.insert(walls.end(), layout.walls.begin(), layout.walls.end());
+      for (const std::string& w : layout.warnings) scene.warnings.push_back("screen '" + sc.name + "': " + w);
+    }
+    scene.screens.push_back(sc);
+  }
+  // No fluid inside the slats: drop fluid particles closer than 0.9 dp to a slat particle.
+  if (walls.size() > tank_walls) {
+    std::vector<Vec2> slats;
+    for (std::size_t k = tank_walls; k < walls.size(); ++k) slats.push_back(walls[k].position);
+    std::vector<Vec2> kept;
+    for (const Vec2& f : fluid) {
+      bool clear = true;
+      for (const Vec2& w : slats)
+        if (norm2(f - w) < 0.81 * scene.dp * scene.dp) {
+          clear = false;
+          break;
+        }
+      if (clear) kept.push_back(f);
+    }
+    fluid.swap(kept);
+  }
 
   Particles& p = scene.particles;
   p.resize(fluid.size() + walls.size());

@@ -18,6 +18,8 @@ struct Scene {
   double still_level = 0.0;    // y of the still free surface
   double initial_fluid_mass = 0.0;  // kg per metre of width
   std::size_t initial_fluid_count = 0;
+  std::vector<ScreenSpec> screens;  // the case's screens, full-height ones resolved to from/to
+  std::vector<std::string> warnings;  // set-up remarks for the user (e.g. slats too fine for dp)
 };
 
 // Throws InputError (naming the key) when the geometry cannot hold the case.

@@ -232,6 +232,42 @@ void read_probes(TableReader& r, CaseSpec& spec) {
   r.finish();
 }
 
+// [[screens]]: porous elements (thesis 2.5, 4.2.2) or explicit slat screens.
+void read_screens(TableReader& root, CaseSpec& spec) {
+  std::set<std::string> names;
+  for (TableReader& r : root.array_of_tables("screens")) {
+    ScreenSpec sc;
+    sc.name = r.string("name");
+    check_name(r, "name", sc.name, names);
+    if (r.has("x")) {
+      if (r.has("from") || r.has("to")) r.fail("x", "give either 'x' (a vertical screen) or 'from' and 'to', not both");
+      sc.full_height = true;
+      sc.from = {r.number("x"), 0.0};
+      sc.to = sc.from;
+    } else {
+      if (!r.has("from") || !r.has("to")) r.fail("x", "a screen needs 'x' (vertical, full height) or 'from' and 'to' ([x, y] in m)");
+      sc.from = r.point("from");
+      sc.to = r.point("to");
+    }
+    const std::string model = r.choice("model", "ergun", {"ergun", "morison", "explicit"});
+    sc.model = model == "morison" ? ScreenModel::morison : model == "explicit" ? ScreenModel::explicit_slats
+                                                                                : ScreenModel::ergun;
+    sc.slat_height = r.non_negative("slat_height", 0.0);
+    sc.slat_gap = r.non_negative("slat_gap", 0.0);
+    if (r.has("solidity")) sc.solidity = r.in_range("solidity", 0.0, 0.0, 0.999);
+    else if (sc.slat_height > 0.0 && sc.slat_gap > 0.0) sc.solidity = sc.slat_height / (sc.slat_height + sc.slat_gap);
+    else r.fail("solidity", "a screen needs 'solidity' (0 to 1) or 'slat_height' and 'slat_gap' (m)");
+    if (sc.model == ScreenModel::explicit_slats && !(sc.slat_height > 0.0 && sc.slat_gap > 0.0))
+      r.fail("slat_height", "an explicit screen needs 'slat_height' and 'slat_gap' (m)");
+    sc.thickness = r.positive("thickness", sc.thickness);
+    sc.spacing = r.non_negative("spacing", sc.spacing);
+    sc.interaction_radius = r.non_negative("interaction_radius", sc.interaction_radius);
+    if (sc.model == ScreenModel::morison) sc.loss_coefficient = r.non_negative("loss_coefficient", 0.0);
+    r.finish();
+    spec.screens.push_back(sc);
+  }
+}
+
 OutputSpec read_output(TableReader& r) {
   OutputSpec o;
   o.sample_interval = r.positive("sample_interval", o.sample_interval);
@@ -317,6 +353,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "time", true, [&](TableReader& t) { spec.time = read_time(t); });
   section(r, "excitation", false, [&](TableReader& t) { spec.excitation = read_excitation(t); });
   section(r, "probes", false, [&](TableReader& t) { read_probes(t, spec); });
+  read_screens(r, spec);
   section(r, "output", false, [&](TableReader& t) { spec.output = read_output(t); });
   section(r, "run", false, [&](TableReader& t) { spec.run = read_run(t); });
   r.finish();
@@ -526,6 +563,26 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (!gauges.empty()) probes.insert("gauge", gauges);
   if (!pressures.empty()) probes.insert("pressure", pressures);
   if (!probes.empty()) root.insert("probes", probes);
+  toml::array screens;
+  for (const ScreenSpec& sc : s.screens) {
+    toml::table t{{"name", sc.name}};
+    if (sc.full_height) {
+      t.insert("x", sc.from.x);
+    } else {
+      t.insert("from", toml::array{sc.from.x, sc.from.y});
+      t.insert("to", toml::array{sc.to.x, sc.to.y});
+    }
+    t.insert("model", sc.model == ScreenModel::morison ? "morison" : sc.model == ScreenModel::explicit_slats ? "explicit" : "ergun");
+    t.insert("solidity", sc.solidity);
+    if (sc.slat_height > 0.0) t.insert("slat_height", sc.slat_height);
+    if (sc.slat_gap > 0.0) t.insert("slat_gap", sc.slat_gap);
+    t.insert("thickness", sc.thickness);
+    t.insert("spacing", sc.spacing);
+    t.insert("interaction_radius", sc.interaction_radius);
+    if (sc.model == ScreenModel::morison) t.insert("loss_coefficient", sc.loss_coefficient);
+    screens.push_back(t);
+  }
+  if (!screens.empty()) root.insert("screens", screens);
   root.insert("output", toml::table{{"sample_interval", s.output.sample_interval},
                                     {"snapshot_interval", s.output.snapshot_interval},
                                     {"snapshot_walls", s.output.snapshot_walls}});

@@ -33,27 +33,41 @@ void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourLi
 
 // Thesis eq. 2.19 (Adami et al. 2012, eq. 27) with the frame acceleration:
 //   p_w = (sum_f p_f W_wf + (g - a) . sum_f rho_f (r_w - r_f) W_wf) / sum_f W_wf,
-// where g - a is the tank-frame body force at the wall particle (frame.at(r_w, 0)). `position` gives the fluid positions to
-// use (r* inside a step). A wall particle with no fluid around it gets p = 0, and the result
-// is clipped at 0: above the free surface the extrapolation goes negative, and a negative wall
-// pressure would pull surface particles up along the wall (the fluid mirrored there is air, p = 0).
+// where g - a is the tank-frame body force at the wall particle (frame.at(r_w, 0)). `position` gives
+// the fluid positions to use (r* inside a step). A wall particle with no fluid around it gets
+// p = 0, and the result is clipped at 0: above the free surface the extrapolation goes negative,
+// and a negative wall pressure would pull surface particles up along the wall (the fluid
+// mirrored there is air, p = 0).
+// Each side of a wall particle has its own sums: `pressure` from the fluid its normal points to,
+// `pressure_back` from the fluid behind it. Tank walls have fluid on one side only; a thin wall
+// (an explicit screen slat, one particle thick) has fluid on both, and each side must feel only
+// its own fluid or the pressure drop across the screen would be averaged away.
 template <class K>
 void adami_wall_pressure(const K& k, Particles& p, const NeighbourList& nl, const std::vector<Vec2>& position,
                          const FrameForce& frame, double rho0) {
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
-    const Vec2 rw = p.position[w];
-    double psum = 0.0, wsum = 0.0;
-    Vec2 rsum;
+    const Vec2 rw = p.position[w], n = p.normal[w];
+    double psum[2] = {0.0, 0.0}, wsum[2] = {0.0, 0.0};
+    Vec2 rsum[2];
     for (auto it = nl.begin(w); it != nl.end(w); ++it) {
       const Vec2 rwf = rw - position[*it];
+      const int side = dot(rwf, n) > 0.0 ? 1 : 0;  // fluid behind the wall: r_f - r_w against n
       const double W = k.w(norm(rwf));
-      psum += W * p.pressure[*it];
-      rsum += W * rwf;
-      wsum += W;
+      psum[side] += W * p.pressure[*it];
+      rsum[side] += W * rwf;
+      wsum[side] += W;
     }
-    p.pressure[w] = wsum > 0.0 ? std::max(0.0, (psum + rho0 * dot(frame.at(rw, Vec2{}), rsum)) / wsum) : 0.0;
+    const Vec2 g = frame.at(rw, Vec2{});
+    auto extrapolate = [&](int s) { return wsum[s] > 0.0 ? std::max(0.0, (psum[s] + rho0 * dot(g, rsum[s])) / wsum[s]) : 0.0; };
+    p.pressure[w] = extrapolate(0);
+    p.pressure_back[w] = extrapolate(1);
   }
+}
+
+// The pressure of wall particle w as fluid at r_f sees it (see adami_wall_pressure).
+inline double wall_pressure_seen_from(const Particles& p, std::size_t w, Vec2 r_f) {
+  return dot(r_f - p.position[w], p.normal[w]) < 0.0 ? p.pressure_back[w] : p.pressure[w];
 }
 
 }  // namespace sloshsph

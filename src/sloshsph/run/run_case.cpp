@@ -97,6 +97,7 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   // Everything that can reject the case happens before the directory is touched.
   Simulation sim(spec);
   prepare_directory(dir, options.force);
+  for (const std::string& w : sim.scene().warnings) std::fprintf(stderr, "sloshsph: warning: %s\n", w.c_str());
 
   const auto start = std::chrono::steady_clock::now();
   write_file_atomic((fs::path(dir) / "case.toml").string(), resolved_case_toml(spec));
@@ -179,6 +180,7 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   s["version"] = kVersion;
   s["git_revision"] = kGitRevision;
   if (!failure.empty()) s["failure"] = failure;
+  if (!sim.scene().warnings.empty()) s["warnings"] = sim.scene().warnings;
   if (sim.leaked() > 0) {
     nlohmann::json leaks = nlohmann::json::array();
     for (const LeakRecord& l : sim.leaks()) {

@@ -43,7 +43,10 @@ Simulation::Simulation(const CaseSpec& spec)
       scene_(build_scene(spec)),
       container_(*scene_.tank, 0.5 * spec.particles.dp, (spec.particles.wall_layers + 2) * spec.particles.dp),
       base_(spec.excitation, spec.time.end),
-      scheme_(spec, scene_.h) {
+      scheme_(spec, scene_.h),
+      screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)) {
+  acc_screen_force_.assign(screens_.elements.size(), Vec2{});
+  screen_loads_.assign(screens_.elements.size(), ScreenElementLoad{});
   speed_limit_ = spec_.run.max_speed_factor * std::sqrt(spec_.fluid.gravity * spec_.fill.depth);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
@@ -56,6 +59,11 @@ void Simulation::build_columns() {
   columns_ = {{"time", "s"}, {"x_base", "m"}, {"v_base", "m/s"}, {"a_base", "m/s^2"}};
   for (const auto& g : spec_.gauges) columns_.push_back({"eta:" + g.name, "m"});
   for (const auto& p : spec_.pressure_probes) columns_.push_back({"p:" + p.name, "Pa"});
+  for (const auto& e : screens_.elements) {
+    if (e.count == 0) continue;  // explicit slats are walls: their force is in F_w
+    columns_.push_back({"F_screen:" + e.name, "N/m"});
+    columns_.push_back({"F_screen_y:" + e.name, "N/m"});
+  }
   columns_.insert(columns_.end(), {{"F_w", "N/m"},
                                    {"F_sw", "N/m"},
                                    {"F_wy", "N/m"},
@@ -121,10 +129,22 @@ void Simulation::step() {
   StepInput in;
   in.dt = dt;
   in.frame = frame_force(spec_.fluid.gravity, mid);
+  if (!screens_.position.empty()) {
+    // Thesis eqs. 2.25-2.28 with the fluid state at the start of the step.
+    in.extra = [this](const Particles& p, std::vector<Vec2>& a) {
+      screen_drag(screens_, p, p.velocity, spec_.fluid.density, spec_.fluid.density * spec_.fluid.viscosity,
+                  screen_work_, a, screen_loads_);
+    };
+  }
   scheme_.step(scene_.particles, in);
 
   const BaseMotion after = base_.at(time_ + dt);
-  const Vec2 wall_force = scheme_.diagnostics().wall_force;
+  // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
+  Vec2 wall_force = scheme_.diagnostics().wall_force;
+  for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
+    wall_force += screen_loads_[e].force_on_fluid;
+    acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
+  }
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
   acc_base_acceleration_ += dt * mid.acceleration.x;
@@ -222,6 +242,13 @@ std::vector<double> Simulation::sample() {
     with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
       for (const auto& probe : spec_.pressure_probes) v.push_back(pressure_at(k, p, grid, probe.position));
     });
+  }
+  for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
+    if (screens_.elements[e].count == 0) continue;
+    const Vec2 f = acc_dt_ > 0.0 ? acc_screen_force_[e] / acc_dt_ : Vec2{};
+    v.push_back(f.x);
+    v.push_back(f.y);
+    acc_screen_force_[e] = {};
   }
   const double mass = fluid_mass();
   Vec2 f_w;

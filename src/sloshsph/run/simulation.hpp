@@ -9,6 +9,7 @@
 #include "sloshsph/geometry/scene.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/excitation.hpp"
+#include "sloshsph/physics/porous.hpp"
 #include "sloshsph/schemes/scheme.hpp"
 
 namespace sloshsph {
@@ -57,6 +58,7 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const Particles& particles() const { return scene_.particles; }
   const AnyScheme& scheme() const { return scheme_; }
+  const ScreenParticles& screens() const { return screens_; }
   const BaseMotionSource& base() const { return base_; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
   std::size_t leaked() const { return leaks_.size(); }
@@ -78,6 +80,11 @@ class Simulation {
   ContainerDistance container_;
   BaseMotionSource base_;
   AnyScheme scheme_;
+  // Porous screens (Ergun, Morison): their particles, buffers, and the last step's loads.
+  ScreenParticles screens_;
+  ScreenDragWork screen_work_;
+  std::vector<ScreenElementLoad> screen_loads_;
+  std::vector<Vec2> acc_screen_force_;  // interval sums of dt x force, per element
   double time_ = 0.0;
   std::size_t steps_ = 0;
   double last_dt_ = 0.0;

@@ -167,7 +167,8 @@ void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, c
     }
     d.wall_acceleration[i] = a_wall;
     d.velocity_old[i] = ui;
-    d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.frame.at(ri, ui));
+    const Vec2 extra = d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i];
+    d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.frame.at(ri, ui) + extra);
   }
 }
 
@@ -233,7 +234,8 @@ void correct_and_advance(const K& k, Particles& p, const NeighbourList& nl, doub
       const std::size_t j = *it;
       const Vec2 rij = ri - d.position_star[j];
       const double F = k.gradient_factor(norm(rij));
-      const Vec2 a = rij * (-c * (pi + p.pressure[j]) * F);
+      const double pj = p.is_fluid(j) ? p.pressure[j] : wall_pressure_seen_from(p, j, ri);
+      const Vec2 a = rij * (-c * (pi + pj) * F);
       if (p.is_fluid(j)) a_fluid += a;
       else a_wall += a;
     }
@@ -270,7 +272,8 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
       const double lambda = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2) / rho0_;
       diag += lambda;
       const bool zero = dirichlet && p.is_fluid(j) && d.free_surface[j];
-      off += zero ? 0.0 : lambda * p.pressure[j];
+      const double pj = p.is_fluid(j) ? p.pressure[j] : wall_pressure_seen_from(p, j, ri);
+      off += zero ? 0.0 : lambda * pj;
     }
     if (!dirichlet) diag = std::min(diag, lambda_full_);  // missing neighbours: air at p = 0 (lambda < 0)
     next[i] = diag != 0.0 ? (d.ppe_source[i] + off) / diag : 0.0;
@@ -315,7 +318,14 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
       double coef;
       if (p.is_fluid(i)) {
         coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
+        // Fluid behind a thin wall sees its back pressure, taken from the last step (known).
+        if (!p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) {
+          diag += coef;
+          rhs += coef * p.pressure_back[j];
+          continue;
+        }
       } else {
+        if (dot(rij, p.normal[i]) > 0.0) continue;  // wall rows: the front fluid only (eq. 2.19)
         coef = k.w(std::sqrt(r2));
         rhs += dot(in.frame.at(ri, Vec2{}), rij) * rho0_ * coef;
       }
@@ -356,6 +366,8 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
 template <class K>
 void IsphScheme::step_with(const K& k, Particles& p, const StepInput& in) {
   IsphData& d = data_;
+  d.extra_acceleration.clear();
+  if (in.extra) in.extra(p, d.extra_acceleration);                                // screens, eq. 2.28
   extrapolate_wall_velocity(k, p, neighbours_, p.velocity);                      // free slip, 2.4.3.1
   if (scheme_.turbulence) sps_stress(k, p, neighbours_, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);  // 2.8-2.9
   predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence, d);  // eq. 2.10

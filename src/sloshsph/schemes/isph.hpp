@@ -28,6 +28,7 @@ struct IsphData {
   std::vector<std::uint8_t> free_surface;  // eq. 2.20
   std::vector<SymTensor2> sps_stress;      // tau / rho, eq. 2.8, m^2/s^2
   std::vector<Vec2> wall_acceleration;     // acceleration of each fluid particle due to wall particles
+  std::vector<Vec2> extra_acceleration;    // driver-supplied (screens), psi_sc of eq. 2.10
   void resize(std::size_t n);
 };
 

@@ -1,15 +1,25 @@
 #pragma once
 // What every scheme's step() takes and reports (ISPH, WCSPH).
 #include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "sloshsph/core/particles.hpp"
 
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/physics/frame.hpp"
 
 namespace sloshsph {
 
+// Fills `acceleration` (one entry per fluid particle, m/s^2) with forces the driver adds to
+// the momentum equation, e.g. the porous drag of screens (thesis eq. 2.28). The scheme calls it
+// at the start of a step, after any reordering of the particles, with the state u(t).
+using ExtraAcceleration = std::function<void(const Particles&, std::vector<Vec2>& acceleration)>;
+
 struct StepInput {
   double dt = 0.0;    // s
   FrameForce frame;   // gravity and frame forces in the tank frame
+  ExtraAcceleration extra;  // optional
 };
 
 struct StepDiagnostics {

@@ -437,7 +437,8 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
     d.position_start[i] = r;
     d.velocity_start[i] = u;
     d.density_start[i] = rho;
-    const Vec2 a = d.acceleration[i] + in.frame.at(r, u);
+    const Vec2 a = d.acceleration[i] + in.frame.at(r, u)
+        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
     p.position[i] = r + 0.5 * dt * u;
     p.velocity[i] = u + 0.5 * dt * a;
     p.density[i] = rho + 0.5 * dt * d.density_rate[i];
@@ -445,7 +446,8 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
   evaluate(k, p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i]);
+    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i])
+        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
     const Vec2 u = d.velocity_start[i] + dt * a;
     p.velocity[i] = u;
     p.density[i] = d.density_start[i] + dt * d.density_rate[i];
@@ -469,7 +471,8 @@ void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
     const Vec2 r = p.position[i], u = p.velocity[i];
-    const Vec2 a = d.acceleration[i] + in.frame.at(r, u);
+    const Vec2 a = d.acceleration[i] + in.frame.at(r, u)
+        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
     const Vec2 u_half = u + 0.5 * dt * a;
     const double rho_half = p.density[i] + 0.5 * dt * d.density_rate[i];
     d.velocity_start[i] = u_half;
@@ -482,7 +485,8 @@ void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
   evaluate(k, p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i]);
+    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i])
+        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
     p.velocity[i] = d.velocity_start[i] + 0.5 * dt * a;
     p.density[i] = d.density_start[i] + 0.5 * dt * d.density_rate[i];
   }
@@ -514,6 +518,8 @@ void WcsphScheme::step(Particles& p, const StepInput& in) {
   const bool have_rates = sync_state(p);
   update_neighbours(p, in.dt, in.frame);
   data_.resize_fluid(p.n_fluid);
+  data_.extra_acceleration.clear();
+  if (in.extra) in.extra(p, data_.extra_acceleration);  // screens: constant over the step
   with_kernel(kernel_type_, h_, [&](const auto& k) {
     if (!have_rates) evaluate(k, p, in.frame);  // first step without initialise(), or new particles
     if (spec_.integrator == Integrator::leapfrog) step_leapfrog(k, p, in);

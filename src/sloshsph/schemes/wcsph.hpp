@@ -41,6 +41,7 @@ struct WcsphData {
   std::vector<Vec2> position_at_build;  // fluid positions at the last neighbour-list build
 
   // Scratch of one step.
+  std::vector<Vec2> extra_acceleration;  // driver-supplied (screens), constant over the step
   std::vector<Vec2> position_start;  // r at the start of the step
   std::vector<Vec2> velocity_start;  // u at the start of the step (leap-frog: at the half step)
   std::vector<double> density_start; // rho at the start of the step (leap-frog: at the half step)
