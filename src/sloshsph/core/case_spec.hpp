@@ -77,6 +77,7 @@ struct SchemeSpec {
   FreeSurfaceModel free_surface = FreeSurfaceModel::air;  // default: air (implicit), thesis (explicit)
   double free_surface_threshold = 0.9;   // rho_n / rho_0 below which a particle is free surface (eq. 2.20)
   bool turbulence = true;                // SPS (thesis eqs. 2.8, 2.9, 2.17)
+  bool clip_negative_pressure = true;    // keep p >= 0 after each pressure solve
   double smagorinsky = 0.1;              // Cs
   double ct = 0.08;                      // Ct, for k_t
   double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual

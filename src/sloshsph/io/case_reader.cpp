@@ -90,6 +90,7 @@ void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.turbulence = r.boolean("turbulence", s.turbulence);
   s.smagorinsky = r.in_range("smagorinsky", s.smagorinsky, 0.0, 1.0);
   s.ct = r.positive("ct", s.ct);
+  s.clip_negative_pressure = r.choice("negative_pressure", "clip", {"clip", "keep"}) == "clip";
   s.solver_tolerance = r.in_range("solver_tolerance", s.solver_tolerance, 1e-14, 1e-1);
   s.solver_max_iterations = static_cast<int>(r.integer("solver_max_iterations", s.solver_max_iterations, 1, 1000000));
 }
@@ -449,6 +450,7 @@ static toml::table scheme_table(const SchemeSpec& x) {
     t.insert("free_surface", x.free_surface == FreeSurfaceModel::thesis ? "thesis" : "air");
     t.insert("free_surface_threshold", x.free_surface_threshold);
     t.insert("turbulence", x.turbulence);
+    t.insert("negative_pressure", x.clip_negative_pressure ? "clip" : "keep");
     t.insert("smagorinsky", x.smagorinsky);
     t.insert("ct", x.ct);
     t.insert("solver_tolerance", x.solver_tolerance);

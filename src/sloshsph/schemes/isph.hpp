@@ -54,6 +54,7 @@ class IsphScheme {
   template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
   void update_neighbours(Particles& p);
+  double clip(double pressure) const;
 
   SchemeSpec scheme_;
   KernelType kernel_type_;
