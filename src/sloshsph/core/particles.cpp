@@ -1,5 +1,7 @@
 #include "sloshsph/core/particles.hpp"
 
+#include <stdexcept>
+
 namespace sloshsph {
 namespace {
 
@@ -20,12 +22,22 @@ void compact_prefix(std::vector<T>& v, std::size_t n_prefix, const std::vector<s
   v.resize(out);
 }
 
+// Every per-particle array must have the length of `position`; a store built by hand
+// that misses one would otherwise be read out of bounds by the permutation.
+void require_consistent(const Particles& p) {
+  const std::size_t n = p.size();
+  if (p.velocity.size() != n || p.pressure.size() != n || p.pressure_back.size() != n ||
+      p.density.size() != n || p.normal.size() != n || p.id.size() != n || p.n_fluid > n)
+    throw std::logic_error("Particles: per-particle arrays differ in length (use Particles::resize)");
+}
+
 }  // namespace
 
 void Particles::permute_fluid(const std::vector<std::uint32_t>& order) {
   std::vector<Vec2> s2;
   std::vector<double> s1;
   std::vector<std::int32_t> si;
+  require_consistent(*this);
   permute_prefix(position, order, s2);
   permute_prefix(velocity, order, s2);
   permute_prefix(normal, order, s2);
@@ -36,6 +48,7 @@ void Particles::permute_fluid(const std::vector<std::uint32_t>& order) {
 }
 
 void Particles::remove_fluid(const std::vector<std::uint8_t>& remove) {
+  require_consistent(*this);
   const std::size_t n = n_fluid;
   compact_prefix(position, n, remove);
   compact_prefix(velocity, n, remove);

@@ -75,10 +75,8 @@ Particles free_blob() {
     }
   const std::size_t n = p.position.size();
   p.n_fluid = n;
-  p.pressure.assign(n, 0.0);
+  p.resize(n);  // every per-particle array, at the length of position
   p.density.assign(n, 1000.0);
-  p.normal.assign(n, {});
-  p.id.resize(n);
   for (std::size_t i = 0; i < n; ++i) p.id[i] = static_cast<std::int32_t>(i);
   p.volume = dp * dp;
   p.mass = 1000.0 * p.volume;
