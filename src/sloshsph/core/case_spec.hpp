@@ -167,6 +167,8 @@ struct OutputSpec {
   double sample_interval = 0.01;    // s, time series
   double snapshot_interval = 0.5;   // s, VTK particle snapshots (<= 0: none)
   bool snapshot_walls = true;       // include wall particles in snapshots
+  int response_cycles = 10;         // steady-state averages over the last N excitation cycles
+  double lowpass_hz = 5.0;          // zero-phase low-pass of the response series (0: none)
 };
 
 struct RunSpec {

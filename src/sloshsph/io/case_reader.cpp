@@ -274,6 +274,8 @@ OutputSpec read_output(TableReader& r) {
   o.sample_interval = r.positive("sample_interval", o.sample_interval);
   o.snapshot_interval = r.non_negative("snapshot_interval", o.snapshot_interval);
   o.snapshot_walls = r.boolean("snapshot_walls", o.snapshot_walls);
+  o.response_cycles = static_cast<int>(r.integer("response_cycles", o.response_cycles, 1, 100000));
+  o.lowpass_hz = r.non_negative("lowpass_hz", o.lowpass_hz);
   r.finish();
   return o;
 }
@@ -587,7 +589,9 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (!screens.empty()) root.insert("screens", screens);
   root.insert("output", toml::table{{"sample_interval", s.output.sample_interval},
                                     {"snapshot_interval", s.output.snapshot_interval},
-                                    {"snapshot_walls", s.output.snapshot_walls}});
+                                    {"snapshot_walls", s.output.snapshot_walls},
+                                    {"response_cycles", s.output.response_cycles},
+                                    {"lowpass_hz", s.output.lowpass_hz}});
   root.insert("run", toml::table{{"max_leaked_fraction", s.run.max_leaked_fraction},
                                  {"max_speed_factor", s.run.max_speed_factor}});
   std::ostringstream out;

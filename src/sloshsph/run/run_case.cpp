@@ -19,6 +19,7 @@
 #include "sloshsph/io/files.hpp"
 #include "sloshsph/io/vtk_writer.hpp"
 #include "sloshsph/run/progress.hpp"
+#include "sloshsph/run/response.hpp"
 #include "sloshsph/run/simulation.hpp"
 
 namespace sloshsph {
@@ -70,6 +71,39 @@ nlohmann::json run_metadata(const CaseSpec& spec, const RunOptions& o) {
           {"started", now_iso8601()}};
 }
 
+// The sampled rows, kept for the analysis written at the end of the run.
+struct SampledSeries {
+  std::vector<std::vector<double>> columns;
+  void add(const std::vector<double>& row) {
+    if (columns.empty()) columns.resize(row.size());
+    for (std::size_t k = 0; k < row.size(); ++k) columns[k].push_back(row[k]);
+  }
+};
+
+// Steady-state response (response.hpp) for periodic excitation; null for other runs.
+nlohmann::json analyse_response(const CaseSpec& spec, const Simulation& sim, const SampledSeries& series,
+                                const std::string& dir) {
+  const ExcitationSpec& e = spec.excitation;
+  if ((e.type != ExcitationType::harmonic && e.type != ExcitationType::pitch) || !(e.omega > 0.0) ||
+      series.columns.empty())
+    return nullptr;
+  std::vector<std::string> names, units;
+  for (const Column& c : sim.columns()) {
+    names.push_back(c.name);
+    units.push_back(c.unit);
+  }
+  ResponseOptions o;
+  o.period = 2.0 * M_PI / e.omega;
+  o.cycles = spec.output.response_cycles;
+  o.cutoff_hz = spec.output.lowpass_hz;
+  o.water_mass = sim.scene().initial_fluid_mass;
+  o.amplitude = e.amplitude;
+  o.energy = e.type == ExcitationType::harmonic;  // pitch does its work through a moment, not F_w dX
+  const Response r = steady_state_response(names, units, series.columns, o);
+  if (r.note.empty()) write_file_atomic((fs::path(dir) / "response.csv").string(), response_csv(r));
+  return response_json(r);
+}
+
 struct Snapshots {
   std::string dir;
   bool walls;
@@ -114,7 +148,13 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   Snapshots snaps{dir, spec.output.snapshot_walls, PvdIndex((fs::path(dir) / "particles.pvd").string())};
   Progress progress(spec.time.end, options.progress);
 
-  csv.write_row(sim.sample());
+  SampledSeries series;
+  auto write_sample = [&] {
+    const std::vector<double> row = sim.sample();
+    csv.write_row(row);
+    series.add(row);
+  };
+  write_sample();
   const bool snapshots = spec.output.snapshot_interval > 0.0;
   if (snapshots) snaps.write(sim.particles(), 0.0);
   double next_sample = spec.output.sample_interval;
@@ -132,7 +172,7 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
       }
       sim.step();
       if (sim.time() >= next_sample - tol || sim.finished()) {
-        csv.write_row(sim.sample());
+        write_sample();
         while (next_sample <= sim.time() + tol) next_sample += spec.output.sample_interval;
       }
       if (snapshots && sim.time() >= next_snapshot - tol) {
@@ -145,7 +185,7 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
     status = "failed";
     failure = e.what();
     code = kExitRunFailed;
-    csv.write_row(sim.sample());  // the last good state
+    write_sample();  // the last good state
     if (snapshots) snaps.write(sim.particles(), sim.time());
   }
   progress.finish(sim.time(), sim.steps());
@@ -179,6 +219,8 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   s["columns"] = units;
   s["version"] = kVersion;
   s["git_revision"] = kGitRevision;
+  if (nlohmann::json response = analyse_response(spec, sim, series, dir); !response.is_null())
+    s["response"] = response;
   if (!failure.empty()) s["failure"] = failure;
   if (!sim.scene().warnings.empty()) s["warnings"] = sim.scene().warnings;
   if (sim.leaked() > 0) {
