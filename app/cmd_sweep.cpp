@@ -1,0 +1,164 @@
+// sloshsph sweep CASE --beta A:B:N [--jobs J] [--threads T] [--out DIR] [--set KEY=VALUE]...
+// One `sloshsph run` child process per frequency ratio, J at a time; each point keeps its run
+// directory (DIR/beta_X.XXXX, its log DIR/beta_X.XXXX.log). A failed point is reported and the
+// sweep goes on; re-running the same command skips the points already finished.
+#include <fcntl.h>
+#include <omp.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "sloshsph/core/errors.hpp"
+#include "sloshsph/io/case_reader.hpp"
+#include "sloshsph/io/files.hpp"
+#include "sloshsph/run/run_case.hpp"
+#include "sloshsph/run/sweep.hpp"
+
+namespace sloshsph::app {
+namespace fs = std::filesystem;
+namespace {
+
+struct SweepOptions {
+  std::string case_path, out_dir, beta;
+  std::vector<std::string> sets;
+  int jobs = 1, threads = 0;
+  bool retry_failed = false, quiet = false;
+};
+
+std::string self_executable() {
+  std::error_code ec;
+  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("cannot find the sloshsph executable: " + ec.message());
+  return p.string();
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Starts `sloshsph run` for one point, its output going to DIR/<label>.log.
+pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool force) {
+  std::vector<std::string> args = {self_executable(), "run", o.case_path, "--out", p.directory,
+                                   "--quiet", "--threads", std::to_string(threads)};
+  for (const std::string& s : o.sets) args.insert(args.end(), {"--set", s});
+  args.insert(args.end(), {"--set", p.override_text});
+  if (force) args.push_back("--force");
+  const std::string log = p.directory + ".log";
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, STDOUT_FILENO);
+      dup2(fd, STDERR_FILENO);
+      close(fd);
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(kExitInternal);
+  }
+  return pid;
+}
+
+// A finished point is skipped, but only if it was run from the same resolved case: a sweep
+// directory reused with another case or other --set values is refused, not silently mixed.
+bool already_done(const SweepOptions& o, const SweepPoint& p) {
+  const std::string status = point_status(p.directory);
+  if (status != "completed" && !(status == "failed" && !o.retry_failed)) return false;
+  std::vector<std::string> sets = o.sets;
+  sets.push_back(p.override_text);
+  const std::string expected = resolved_case_toml(load_case(o.case_path, sets));
+  if (read_text(fs::path(p.directory) / "case.toml") != expected)
+    throw InputError(p.directory, "", "this point was run from a different case or --set values; use another --out");
+  return true;
+}
+
+void report(const SweepOptions& o, const char* what, const SweepPoint& p, std::size_t done, std::size_t running,
+            std::size_t left) {
+  if (o.quiet) return;
+  std::fprintf(stderr, "sweep: %-9s %s   [%zu done, %zu running, %zu left]\n", what, p.label.c_str(), done, running,
+               left);
+}
+
+int run_sweep(const SweepOptions& o) {
+  const CaseSpec spec = load_case(o.case_path, o.sets);
+  const std::string dir = o.out_dir.empty() ? (fs::path("out") / (spec.name + "_sweep")).string() : o.out_dir;
+  const std::vector<SweepPoint> points = plan_sweep(spec, parse_beta_range(o.beta), dir);
+  // Every point's case is read before anything runs: a bad point fails the sweep at once.
+  std::vector<const SweepPoint*> queue;
+  for (const SweepPoint& p : points) {
+    std::vector<std::string> sets = o.sets;
+    sets.push_back(p.override_text);
+    (void)load_case(o.case_path, sets);
+    if (!already_done(o, p)) queue.push_back(&p);
+  }
+  fs::create_directories(dir);
+  const int threads = o.threads > 0 ? o.threads : std::max(1, omp_get_num_procs() / std::max(1, o.jobs));
+  std::size_t done = points.size() - queue.size(), failed = 0, next = 0;
+  if (!o.quiet && done > 0) std::fprintf(stderr, "sweep: %zu of %zu points already finished, skipped\n", done, points.size());
+  std::map<pid_t, const SweepPoint*> running;
+  while (next < queue.size() || !running.empty()) {
+    while (!stop_requested() && next < queue.size() && running.size() < static_cast<std::size_t>(o.jobs)) {
+      const SweepPoint& p = *queue[next++];
+      const bool force = fs::exists(p.directory);  // an interrupted or failed earlier attempt
+      running[start_point(o, p, threads, force)] = &p;
+      report(o, "started", p, done, running.size(), queue.size() - next);
+    }
+    int wstatus = 0;
+    const pid_t pid = waitpid(-1, &wstatus, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const SweepPoint& p = *it->second;
+    running.erase(it);
+    ++done;
+    const int code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : kExitInternal;
+    if (code != kExitSuccess && code != kExitInterrupted) ++failed;
+    report(o, code == kExitSuccess ? "completed" : code == kExitInterrupted ? "stopped" : "FAILED", p, done,
+           running.size(), queue.size() - next);
+    if (code != kExitSuccess && code != kExitInterrupted && !o.quiet)
+      std::fprintf(stderr, "sweep: %s exited with code %d; see %s.log\n", p.label.c_str(), code, p.directory.c_str());
+  }
+  write_file_atomic((fs::path(dir) / "frequency_response.csv").string(), frequency_response_csv(spec, points));
+  if (!o.quiet) std::fprintf(stderr, "sweep: %zu points, %zu failed -> %s/frequency_response.csv\n", points.size(), failed, dir.c_str());
+  if (stop_requested()) return kExitInterrupted;
+  for (const SweepPoint& p : points)
+    if (point_status(p.directory) != "completed") return kExitRunFailed;
+  return kExitSuccess;
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* sub = app.add_subcommand("sweep", "Run one simulation per frequency ratio and tabulate the response");
+  sub->add_option("case", o->case_path, "Case file (TOML) with a harmonic or pitch excitation")->required();
+  sub->add_option("--beta", o->beta, "Frequency ratios: A:B:N (N points from A to B), a,b,c, or one value")->required();
+  sub->add_option("--jobs", o->jobs, "Points run at the same time (default 1)")->check(CLI::PositiveNumber);
+  sub->add_option("--threads", o->threads, "OpenMP threads per point (default: cores / jobs)")->check(CLI::PositiveNumber);
+  sub->add_option("--out", o->out_dir, "Sweep directory (default: out/<case name>_sweep)");
+  add_set_option(sub, o->sets);
+  sub->add_flag("--retry-failed", o->retry_failed, "Run again the points that failed in an earlier attempt");
+  sub->add_flag("--quiet", o->quiet, "No progress output");
+  return {sub, [o]() {
+            install_stop_handlers();
+            return run_sweep(*o);
+          }};
+}
+
+}  // namespace sloshsph::app
