@@ -61,14 +61,14 @@ WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
       tank_where_(spec.where("tank.shape")),
       neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h) {
   if (!(c0_ > 0.0) || !std::isfinite(c0_)) {
-    const std::string key = spec.scheme.wcsph.sound_speed > 0.0 ? "scheme.wcsph.sound_speed"
-                                                                : "scheme.wcsph.max_density_variation";
+    const std::string key = spec.scheme.wcsph.sound_speed > 0.0 ? "scheme.sound_speed"
+                                                                : "scheme.max_density_variation";
     throw InputError(spec.where(key), key,
                      "gives no positive sound speed (c0 = " + std::to_string(c0_) +
-                         " m/s); set scheme.wcsph.sound_speed or check the fill depth, tank length and gravity");
+                         " m/s); set scheme.sound_speed or check the fill depth, tank length and gravity");
   }
   if (!(spec_.cfl > 0.0))
-    throw InputError(spec.where("scheme.wcsph.cfl"), "scheme.wcsph.cfl", "must be positive");
+    throw InputError(spec.where("scheme.cfl"), "scheme.cfl", "must be positive");
 }
 
 std::size_t WcsphScheme::memory_bytes() const {
