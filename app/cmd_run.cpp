@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "sloshsph/core/errors.hpp"
 #include "sloshsph/run/run_case.hpp"
 
 namespace sloshsph::app {
@@ -11,7 +12,7 @@ Command add_run_command(CLI::App& app) {
     std::string case_path, out_dir;
     std::vector<std::string> sets;
     int threads = 0;
-    bool force = false, quiet = false;
+    bool force = false, quiet = false, report = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("run", "Run one simulation into a run directory");
@@ -21,6 +22,7 @@ Command add_run_command(CLI::App& app) {
   sub->add_option("--threads", o->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   sub->add_flag("--force", o->force, "Allow writing into an existing, non-empty run directory");
   sub->add_flag("--quiet", o->quiet, "No progress output");
+  sub->add_flag("--report", o->report, "Write plots and report.html into the run directory at the end");
   return {sub, [o]() {
             set_threads(o->threads);
             const CaseSpec spec = load_case(o->case_path, o->sets);
@@ -30,7 +32,10 @@ Command add_run_command(CLI::App& app) {
             options.progress = !o->quiet;
             options.command_line = command_line();
             install_stop_handlers();
-            return run_case(spec, options);
+            const int code = run_case(spec, options);
+            if (!o->report || code == kExitInterrupted) return code;
+            const int report = write_report(options.out_dir.empty() ? "out/" + spec.name : options.out_dir);
+            return code != kExitSuccess ? code : report;
           }};
 }
 

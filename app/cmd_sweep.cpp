@@ -29,7 +29,7 @@ struct SweepOptions {
   std::string case_path, out_dir, beta;
   std::vector<std::string> sets;
   int jobs = 1, threads = 0;
-  bool retry_failed = false, quiet = false;
+  bool retry_failed = false, quiet = false, report = false;
 };
 
 std::string self_executable() {
@@ -137,9 +137,10 @@ int run_sweep(const SweepOptions& o) {
   write_file_atomic((fs::path(dir) / "frequency_response.csv").string(), frequency_response_csv(spec, points));
   if (!o.quiet) std::fprintf(stderr, "sweep: %zu points, %zu failed -> %s/frequency_response.csv\n", points.size(), failed, dir.c_str());
   if (stop_requested()) return kExitInterrupted;
+  const int report = o.report ? write_report(dir) : kExitSuccess;
   for (const SweepPoint& p : points)
     if (point_status(p.directory) != "completed") return kExitRunFailed;
-  return kExitSuccess;
+  return report;
 }
 
 }  // namespace
@@ -155,6 +156,7 @@ Command add_sweep_command(CLI::App& app) {
   add_set_option(sub, o->sets);
   sub->add_flag("--retry-failed", o->retry_failed, "Run again the points that failed in an earlier attempt");
   sub->add_flag("--quiet", o->quiet, "No progress output");
+  sub->add_flag("--report", o->report, "Write plots and report.html into the sweep directory at the end");
   return {sub, [o]() {
             install_stop_handlers();
             return run_sweep(*o);

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   for (int k = 0; k < argc; ++k) app::command_line() += (k ? " " : "") + std::string(argv[k]);
 
   std::vector<app::Command> commands = {app::add_run_command(app), app::add_modes_command(app),
-                                        app::add_tune_command(app), app::add_sweep_command(app)};
+                                        app::add_tune_command(app), app::add_sweep_command(app),
+                                        app::add_report_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
