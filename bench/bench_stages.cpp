@@ -1,0 +1,95 @@
+// Google Benchmark suite of the time-step stages (issue: speed). Each benchmark reports
+// particle-steps per second as the counter `particle_steps/s` (items processed per second).
+// Sizes: the Tait tank (L = 0.966 m, depth 0.119 m) at dp = 10, 7 and 5 mm, and a deep tank
+// scaled to about 20,000 and 200,000 particles for the cost-per-particle curve.
+//   build/bench/bench_stages --benchmark_filter=IsphStep   (OMP_NUM_THREADS=1 or 2)
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "sloshsph/geometry/scene.hpp"
+#include "sloshsph/io/case_reader.hpp"
+#include "sloshsph/physics/porous.hpp"
+#include "sloshsph/run/simulation.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+
+namespace sloshsph {
+namespace {
+
+std::string case_file(const std::string& name) { return std::string(SLOSHSPH_SOURCE_DIR) + "/cases/" + name; }
+
+// The Tait tank with its two Ergun screens at X0/L = 0.016 (cases/tait2005_screens.toml).
+CaseSpec tait_case(double dp) {
+  return resolve_case(read_case_file(case_file("tait2005_screens.toml"),
+                                     {"particles.dp=" + std::to_string(dp), "output.snapshot_interval=0"}));
+}
+
+// A tank of aspect 2:1 filled to half its height with about `fluid` particles (walls add more).
+CaseSpec sized_tank(double fluid) {
+  const double length = 2.0, depth = 1.0;
+  const double dp = std::sqrt(length * depth / fluid);
+  return resolve_case(read_case_file(case_file("hydrostatic.toml"),
+                                     {"tank.length=2.0", "tank.height=1.5", "fill.depth=1.0",
+                                      "particles.dp=" + std::to_string(dp), "time.dt=" + std::to_string(0.05 * dp),
+                                      "output.snapshot_interval=0", "probes.pressure=[]",
+                                      "scheme.solver_max_iterations=20000"}));  // see docs/performance.md
+}
+
+// One Simulation::step (the whole ISPH step with screens, turbulence, walls, observers'
+// accumulators), after 20 steps to leave the start-up.
+void run_steps(benchmark::State& state, const CaseSpec& spec) {
+  Simulation sim(spec);
+  for (int k = 0; k < 20; ++k) sim.step();
+  const double particles = static_cast<double>(sim.particles().size());
+  for (auto _ : state) sim.step();
+  state.counters["particles"] = particles;
+  state.counters["particle_steps/s"] =
+      benchmark::Counter(particles * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void IsphStepTaitScreens(benchmark::State& state) { run_steps(state, tait_case(state.range(0) / 1000.0)); }
+BENCHMARK(IsphStepTaitScreens)->Arg(10)->Arg(7)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void IsphStepSized(benchmark::State& state) { run_steps(state, sized_tank(static_cast<double>(state.range(0)))); }
+BENCHMARK(IsphStepSized)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void WcsphStepTait(benchmark::State& state) {
+  const CaseSpec spec = resolve_case(read_case_file(case_file("tait2005_screens.toml"),
+                                     {"particles.dp=0.007", "scheme.type=\"wcsph\"", "output.snapshot_interval=0"}));
+  run_steps(state, spec);
+}
+BENCHMARK(WcsphStepTait)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Neighbour-list build alone on the particles of the Tait tank.
+void NeighbourBuild(benchmark::State& state) {
+  const CaseSpec spec = tait_case(state.range(0) / 1000.0);
+  const Scene scene = build_scene(spec);
+  NeighbourList list(2.0 * scene.h, 0.2 * 2.0 * scene.h);
+  for (auto _ : state) list.build(scene.particles.position, scene.particles.n_fluid);
+  state.counters["particle_builds/s"] = benchmark::Counter(
+      static_cast<double>(scene.particles.size()) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(NeighbourBuild)->Arg(7)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The porous drag stage alone (two passes over the screen interface zone).
+void PorousDrag(benchmark::State& state) {
+  const CaseSpec spec = tait_case(state.range(0) / 1000.0);
+  Simulation sim(spec);
+  for (int k = 0; k < 20; ++k) sim.step();
+  ScreenDragWork work;
+  std::vector<Vec2> acceleration;
+  std::vector<ScreenElementLoad> loads;
+  const Particles& p = sim.particles();
+  for (auto _ : state)
+    screen_drag(sim.screens(), p, p.velocity, spec.fluid.density, spec.fluid.density * spec.fluid.viscosity, work,
+                acceleration, loads);
+  state.counters["screen_particles"] = static_cast<double>(sim.screens().position.size());
+}
+BENCHMARK(PorousDrag)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+}  // namespace
+}  // namespace sloshsph
+
+BENCHMARK_MAIN();
