@@ -83,6 +83,20 @@ CycleEnergy energy_per_cycle(const std::vector<double>& t, const std::vector<dou
   return {work / cycles, cycles};
 }
 
+CycleEnergy energy_per_cycle_from_work(const std::vector<double>& t, const std::vector<double>& work, double period,
+                                       int n_cycles) {
+  check_series(t, work, "energy per cycle");
+  const int cycles = cycles_that_fit(t, period, n_cycles, "energy per cycle");
+  const double t0 = t.back() - cycles * period;
+  const auto i = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), t0) - t.begin());
+  double w0 = work[i];
+  if (i > 0) {
+    const double w = (t0 - t[i - 1]) / (t[i] - t[i - 1]);
+    w0 = (1.0 - w) * work[i - 1] + w * work[i];
+  }
+  return {(work.back() - w0) / cycles, cycles};
+}
+
 double normalised_energy(double energy, double water_mass, double amplitude, double omega) {
   const double v = amplitude * omega;
   return energy / (0.5 * water_mass * v * v);  // thesis eq. 4.27

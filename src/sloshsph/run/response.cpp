@@ -55,15 +55,19 @@ Response steady_state_response(const std::vector<std::string>& names, const std:
     r.values.push_back({names[k], units[k], a.avg_max, a.avg_min});
     r.cycles = a.cycles;
   }
+  // eq. 4.28 from the per-step work sum W_base when the run has it (exact pairing of force and
+  // displacement, steady_state.hpp), else from the sampled F_w and x_base.
+  const int work = column_index(names, "W_base");
   const int force = column_index(names, "F_w"), base = column_index(names, "x_base");
-  if (options.energy && force > 0 && base > 0) {
-    // eq. 4.28 integrates F dX: the displacement is smooth, the force is filtered like the others.
-    const CycleEnergy e = energy_per_cycle(t, filtered(columns[force], dt, r.cutoff_hz), columns[base],
-                                           options.period, options.cycles);
-    r.energy_per_cycle = e.energy;
+  std::optional<CycleEnergy> e;
+  if (options.energy && work > 0) e = energy_per_cycle_from_work(t, columns[work], options.period, options.cycles);
+  else if (options.energy && force > 0 && base > 0)
+    e = energy_per_cycle(t, filtered(columns[force], dt, r.cutoff_hz), columns[base], options.period, options.cycles);
+  if (e) {
+    r.energy_per_cycle = e->energy;
     if (options.water_mass > 0.0 && options.amplitude > 0.0)
       r.normalised_energy =
-          normalised_energy(e.energy, options.water_mass, options.amplitude, 2.0 * M_PI / options.period);
+          normalised_energy(e->energy, options.water_mass, options.amplitude, 2.0 * M_PI / options.period);
   }
   return r;
 }
