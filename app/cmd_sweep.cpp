@@ -20,6 +20,7 @@
 #include "sloshsph/io/files.hpp"
 #include "sloshsph/run/run_case.hpp"
 #include "sloshsph/run/sweep.hpp"
+#include "sweep_ranks.hpp"
 
 namespace sloshsph::app {
 namespace fs = std::filesystem;
@@ -85,37 +86,70 @@ bool already_done(const SweepOptions& o, const SweepPoint& p) {
   return true;
 }
 
-void report(const SweepOptions& o, const char* what, const SweepPoint& p, std::size_t done, std::size_t running,
-            std::size_t left) {
+// "sweep:" or, under mpirun, "sweep[rank/size]:".
+std::string prefix(const SweepRanks& ranks) {
+  if (ranks.size() == 1) return "sweep:";
+  return "sweep[" + std::to_string(ranks.rank()) + "/" + std::to_string(ranks.size()) + "]:";
+}
+
+void report(const SweepOptions& o, const SweepRanks& ranks, const char* what, const SweepPoint& p, std::size_t done,
+            std::size_t running, std::size_t left) {
   if (o.quiet) return;
-  std::fprintf(stderr, "sweep: %-9s %s   [%zu done, %zu running, %zu left]\n", what, p.label.c_str(), done, running,
-               left);
+  std::fprintf(stderr, "%s %-9s %s   [%zu done, %zu running, %zu left]\n", prefix(ranks).c_str(), what,
+               p.label.c_str(), done, running, left);
+}
+
+// Under mpirun without a shared file system rank 0 lacks the other ranks' run directories:
+// it receives their summary.json texts and writes those it does not have, so that
+// frequency_response.csv is complete either way.
+void collect_remote_summaries(const SweepRanks& ranks, const std::vector<SweepPoint>& points) {
+  std::vector<std::string> mine;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (ranks.mine(k)) {
+      std::ifstream in(fs::path(points[k].directory) / "summary.json");
+      std::ostringstream text;
+      if (in) text << in.rdbuf();
+      mine.push_back(text.str());
+    }
+  const std::vector<std::string> received = ranks.gather_to_root(mine, points.size());
+  for (std::size_t k = 0; k < received.size(); ++k) {
+    const fs::path summary = fs::path(points[k].directory) / "summary.json";
+    if (received[k].empty() || fs::exists(summary)) continue;
+    fs::create_directories(points[k].directory);
+    write_file_atomic(summary.string(), received[k]);
+  }
 }
 
 int run_sweep(const SweepOptions& o) {
   const CaseSpec spec = load_case(o.case_path, o.sets);
   const std::string dir = o.out_dir.empty() ? (fs::path("out") / (spec.name + "_sweep")).string() : o.out_dir;
   const std::vector<SweepPoint> points = plan_sweep(spec, parse_beta_range(o.beta), dir);
+  const SweepRanks ranks;
   // Every point's case is read before anything runs: a bad point fails the sweep at once.
   std::vector<const SweepPoint*> queue;
-  for (const SweepPoint& p : points) {
+  std::size_t owned = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
     std::vector<std::string> sets = o.sets;
-    sets.push_back(p.override_text);
+    sets.push_back(points[k].override_text);
     (void)load_case(o.case_path, sets);
-    if (!already_done(o, p)) queue.push_back(&p);
+    if (!ranks.mine(k)) continue;
+    ++owned;
+    if (!already_done(o, points[k])) queue.push_back(&points[k]);
   }
   fs::create_directories(dir);
   const int threads = o.threads > 0 ? o.threads : std::max(1, omp_get_num_procs() / std::max(1, o.jobs));
-  std::size_t done = points.size() - queue.size(), failed = 0, next = 0;
-  if (!o.quiet && done > 0) std::fprintf(stderr, "sweep: %zu of %zu points already finished, skipped\n", done, points.size());
+  std::size_t done = owned - queue.size(), failed = 0, next = 0;
+  if (!o.quiet && done > 0)
+    std::fprintf(stderr, "%s %zu of %zu points already finished, skipped\n", prefix(ranks).c_str(), done, owned);
   std::map<pid_t, const SweepPoint*> running;
   while (next < queue.size() || !running.empty()) {
     while (!stop_requested() && next < queue.size() && running.size() < static_cast<std::size_t>(o.jobs)) {
       const SweepPoint& p = *queue[next++];
       const bool force = fs::exists(p.directory);  // an interrupted or failed earlier attempt
       running[start_point(o, p, threads, force)] = &p;
-      report(o, "started", p, done, running.size(), queue.size() - next);
+      report(o, ranks, "started", p, done, running.size(), queue.size() - next);
     }
+    if (running.empty()) break;  // stopped before starting the rest
     int wstatus = 0;
     const pid_t pid = waitpid(-1, &wstatus, 0);
     if (pid < 0) {
@@ -129,18 +163,27 @@ int run_sweep(const SweepOptions& o) {
     ++done;
     const int code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : kExitInternal;
     if (code != kExitSuccess && code != kExitInterrupted) ++failed;
-    report(o, code == kExitSuccess ? "completed" : code == kExitInterrupted ? "stopped" : "FAILED", p, done,
+    report(o, ranks, code == kExitSuccess ? "completed" : code == kExitInterrupted ? "stopped" : "FAILED", p, done,
            running.size(), queue.size() - next);
     if (code != kExitSuccess && code != kExitInterrupted && !o.quiet)
-      std::fprintf(stderr, "sweep: %s exited with code %d; see %s.log\n", p.label.c_str(), code, p.directory.c_str());
+      std::fprintf(stderr, "%s %s exited with code %d; see %s.log\n", prefix(ranks).c_str(), p.label.c_str(), code,
+                   p.directory.c_str());
   }
-  write_file_atomic((fs::path(dir) / "frequency_response.csv").string(), frequency_response_csv(spec, points));
-  if (!o.quiet) std::fprintf(stderr, "sweep: %zu points, %zu failed -> %s/frequency_response.csv\n", points.size(), failed, dir.c_str());
+  collect_remote_summaries(ranks, points);
+  std::vector<SweepPoint> considered;  // rank 0: every point; other ranks: their own
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (ranks.rank() == 0 || ranks.mine(k)) considered.push_back(points[k]);
+  if (ranks.rank() == 0) {
+    write_file_atomic((fs::path(dir) / "frequency_response.csv").string(), frequency_response_csv(spec, points));
+    if (!o.quiet)
+      std::fprintf(stderr, "%s %zu points, %zu failed here -> %s/frequency_response.csv\n", prefix(ranks).c_str(),
+                   points.size(), failed, dir.c_str());
+  }
   if (stop_requested()) return kExitInterrupted;
-  const int report = o.report ? write_report(dir) : kExitSuccess;
-  for (const SweepPoint& p : points)
+  const int report_code = o.report && ranks.rank() == 0 ? write_report(dir) : kExitSuccess;
+  for (const SweepPoint& p : considered)
     if (point_status(p.directory) != "completed") return kExitRunFailed;
-  return report;
+  return report_code;
 }
 
 }  // namespace
