@@ -12,6 +12,7 @@ Command add_run_command(CLI::App& app) {
     std::string case_path, out_dir;
     std::vector<std::string> sets;
     int threads = 0;
+    double checkpoint_every = 0.0;
     bool force = false, quiet = false, report = false;
   };
   auto o = std::make_shared<Options>();
@@ -22,6 +23,9 @@ Command add_run_command(CLI::App& app) {
   sub->add_option("--threads", o->threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   sub->add_flag("--force", o->force, "Allow writing into an existing, non-empty run directory");
   sub->add_flag("--quiet", o->quiet, "No progress output");
+  sub->add_option("--checkpoint-every", o->checkpoint_every,
+                  "Write checkpoint.bin every T seconds of simulated time (resume with `sloshsph resume DIR`)")
+      ->check(CLI::PositiveNumber);
   sub->add_flag("--report", o->report, "Write plots and report.html into the run directory at the end");
   return {sub, [o]() {
             set_threads(o->threads);
@@ -31,6 +35,7 @@ Command add_run_command(CLI::App& app) {
             options.force = o->force;
             options.progress = !o->quiet;
             options.command_line = command_line();
+            options.checkpoint_every = o->checkpoint_every;
             install_stop_handlers();
             const int code = run_case(spec, options);
             if (!o->report || code == kExitInterrupted) return code;

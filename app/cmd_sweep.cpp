@@ -49,16 +49,22 @@ std::string read_text(const fs::path& path) {
 
 // Starts `sloshsph run` for one point, its output going to DIR/<label>.log.
 pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool force) {
-  std::vector<std::string> args = {self_executable(), "run", o.case_path, "--out", p.directory,
-                                   "--quiet", "--threads", std::to_string(threads)};
-  for (const std::string& s : o.sets) args.insert(args.end(), {"--set", s});
-  args.insert(args.end(), {"--set", p.override_text});
-  if (force) args.push_back("--force");
+  std::vector<std::string> args;
+  std::error_code ec;
+  if (point_status(p.directory) == "interrupted" && fs::exists(fs::path(p.directory) / "checkpoint.bin", ec)) {
+    // An interrupted point continues from its checkpoint (same results as an unbroken run).
+    args = {self_executable(), "resume", p.directory, "--quiet", "--threads", std::to_string(threads)};
+  } else {
+    args = {self_executable(), "run", o.case_path, "--out", p.directory, "--quiet", "--threads", std::to_string(threads)};
+    for (const std::string& s : o.sets) args.insert(args.end(), {"--set", s});
+    args.insert(args.end(), {"--set", p.override_text});
+    if (force) args.push_back("--force");
+  }
   const std::string log = p.directory + ".log";
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
     if (fd >= 0) {
       dup2(fd, STDOUT_FILENO);
       dup2(fd, STDERR_FILENO);

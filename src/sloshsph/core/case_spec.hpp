@@ -83,6 +83,10 @@ struct SchemeSpec {
   double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual
   int solver_max_iterations = 1000;      // implicit PPE
   double neighbour_skin = 0.2;           // Verlet skin as a fraction of the support radius 2h
+  // ISPH: repulsive force of the first wall layer (thesis eq. 3.18, physics/wall_repulsion.hpp).
+  bool repulsive_walls = false;
+  double repulsive_coefficient = 1.0;    // D = coefficient g H_w
+  double repulsive_range = 0.5;          // r0 / h (eq. 3.18: h_k / 2)
   WcsphSpec wcsph;                       // used when type = "wcsph"
 };
 
@@ -176,6 +180,50 @@ struct RunSpec {
   double max_speed_factor = 20.0;     // fail if any speed exceeds this times sqrt(g * depth)
 };
 
+// External force F_e(t) on the structure (thesis eq. 4.20), [structure.load].
+//  harmonic: F = r(t) amplitude sin(2 pi frequency t), r the cosine ramp of the excitation
+//  noise:    band-limited white noise (signals/white_noise.hpp), scaled to a target mean hourly
+//            peak acceleration of the structure without TLD (thesis 4.4.2.1) or to a given RMS
+//  record:   a two-column CSV force record (time, N) times `scale`
+//  pulse:    one-cycle sine or cosine force pulse of peak `amplitude` (Dincer 2019, 3.1, as a force)
+enum class StructureLoadType { none, harmonic, noise, record, pulse };
+
+struct StructureLoadSpec {
+  StructureLoadType type = StructureLoadType::none;
+  double amplitude = 0.0;  // N: harmonic amplitude, pulse peak
+  double frequency = 0.0;  // Hz (harmonic)
+  double ramp = 0.0;       // s (harmonic)
+  // record
+  std::string file;         // resolved path
+  double scale = 1.0;       // multiplies the force values
+  double time_scale = 1.0;  // multiplies the time column to give seconds
+  double start = 0.0;       // s, record or pulse start
+  // pulse
+  std::string shape = "sine";  // "sine" or "cosine"
+  double period = 0.0;         // s
+  // noise
+  std::uint64_t seed = 1;
+  double band_low = 0.05, band_high = 0.5;  // Hz (thesis 4.4.2.1)
+  std::optional<double> target_peak_mg;     // milli-g: mean peak acceleration of the bare structure
+  std::optional<double> rms;                // N: or the RMS force directly
+  double peak_duration = 3600.0;            // s, the observation time of that mean peak (hourly)
+};
+
+// A single-degree-of-freedom structure carrying the tank(s) (thesis 4.2.3, eqs. 4.20-4.22),
+// [structure]. The 2D fluid force per metre is multiplied by tank_width * tanks.
+struct StructureSpec {
+  double mass = 0.0;       // M_s, kg
+  double damping = 0.0;    // C_s, N s/m
+  double stiffness = 0.0;  // K_s, N/m
+  double tank_width = 1.0;  // m, out-of-plane width b of one tank
+  int tanks = 1;            // identical tanks (0: the fluid rides on the structure without acting back)
+  double rigid_mass = 0.0;  // kg per metre of tank width, per tank: liquid or tank mass moving rigidly with it
+  bool ground_from_excitation = false;  // [excitation] is the ground acceleration of the structure
+  double initial_displacement = 0.0;    // m, relative to the ground
+  double initial_velocity = 0.0;        // m/s
+  StructureLoadSpec load;
+};
+
 struct CaseSpec {
   std::string source;  // file the case came from ("<built-in>" for the default case)
   std::string name;    // stem of the file, names the default output directory
@@ -190,6 +238,7 @@ struct CaseSpec {
   std::vector<GaugeSpec> gauges;
   std::vector<PressureProbeSpec> pressure_probes;
   std::vector<ScreenSpec> screens;
+  std::optional<StructureSpec> structure;  // [structure]: the tank moves with an SDOF structure
   OutputSpec output;
   RunSpec run;
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <set>
 #include <sstream>
 
@@ -93,6 +94,9 @@ void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.clip_negative_pressure = r.choice("negative_pressure", "clip", {"clip", "keep"}) == "clip";
   s.solver_tolerance = r.in_range("solver_tolerance", s.solver_tolerance, 1e-14, 1e-1);
   s.solver_max_iterations = static_cast<int>(r.integer("solver_max_iterations", s.solver_max_iterations, 1, 1000000));
+  s.repulsive_walls = r.boolean("repulsive_walls", s.repulsive_walls);  // thesis eq. 3.18
+  s.repulsive_coefficient = r.in_range("repulsive_coefficient", s.repulsive_coefficient, 0.0, 100.0);
+  s.repulsive_range = r.in_range("repulsive_range", s.repulsive_range, 0.05, 2.0);
 }
 
 void read_wcsph_keys(TableReader& r, SchemeSpec& s) {
@@ -163,7 +167,8 @@ std::string resolve_path(TableReader& r, const std::string& key) {
     p = std::filesystem::path(r.file()).parent_path() / p;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(p, ec)) r.fail(key, "no such file: " + p.string());
-  return p.lexically_normal().string();
+  // Absolute, so that the case.toml written into a run directory can be run from anywhere.
+  return std::filesystem::absolute(p).lexically_normal().string();
 }
 
 ExcitationSpec read_excitation(TableReader& r) {
@@ -269,6 +274,83 @@ void read_screens(TableReader& root, CaseSpec& spec) {
   }
 }
 
+// [structure.load]: the external force on the structure. Keys of one load type are read only
+// for that type, so a key of another type is an unknown key.
+StructureLoadSpec read_structure_load(TableReader& r) {
+  StructureLoadSpec l;
+  const std::string type = r.choice("type", "harmonic", {"none", "harmonic", "noise", "record", "pulse"});
+  if (type == "harmonic") {
+    l.type = StructureLoadType::harmonic;
+    if (!r.has("amplitude")) r.fail("amplitude", "is required for a harmonic load (N)");
+    l.amplitude = r.non_negative("amplitude", 0.0);
+    l.frequency = r.positive("frequency");
+    l.ramp = r.non_negative("ramp", l.ramp);
+  } else if (type == "noise") {
+    l.type = StructureLoadType::noise;
+    l.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, 9007199254740991LL));
+    if (r.has("band")) {
+      const Vec2 band = r.point("band");
+      l.band_low = band.x;
+      l.band_high = band.y;
+    }
+    if (!(l.band_low > 0.0 && l.band_high > l.band_low))
+      r.fail("band", "expected [f_low, f_high] with 0 < f_low < f_high (Hz)");
+    l.target_peak_mg = r.optional_positive("target_peak_mg");
+    l.rms = r.optional_positive("rms");
+    if (l.target_peak_mg && l.rms) r.fail("rms", "give only one of 'target_peak_mg' (milli-g) and 'rms' (N)");
+    if (!l.target_peak_mg && !l.rms)
+      r.fail("target_peak_mg", "a noise load needs 'target_peak_mg' (mean peak acceleration of the structure "
+                               "without TLD, milli-g) or 'rms' (N)");
+    l.peak_duration = r.positive("peak_duration", l.peak_duration);
+  } else if (type == "record") {
+    l.type = StructureLoadType::record;
+    l.file = resolve_path(r, "file");
+    l.scale = r.number("scale", l.scale);
+    l.time_scale = r.positive("time_scale", l.time_scale);
+    l.start = r.non_negative("start", l.start);
+  } else if (type == "pulse") {
+    l.type = StructureLoadType::pulse;
+    l.shape = r.choice("shape", l.shape, {"sine", "cosine"});
+    l.amplitude = r.number("amplitude");
+    l.period = r.positive("period");
+    l.start = r.non_negative("start", l.start);
+  }
+  r.finish();
+  return l;
+}
+
+// [structure]: an SDOF structure given by (mass, stiffness, damping) or (mass, frequency,
+// damping_ratio), resolved here to M, K, C (K = M w^2, C = 2 zeta M w, w = 2 pi f).
+StructureSpec read_structure(TableReader& r) {
+  StructureSpec s;
+  s.mass = r.positive("mass");
+  const std::optional<double> stiffness = r.optional_positive("stiffness");
+  const std::optional<double> frequency = r.optional_positive("frequency");
+  if (stiffness && frequency) r.fail("frequency", "give only one of 'stiffness' (N/m) and 'frequency' (Hz)");
+  if (!stiffness && !frequency) r.fail("stiffness", "the structure needs 'stiffness' (N/m) or 'frequency' (Hz)");
+  const double omega = frequency ? 2.0 * 3.141592653589793238 * *frequency : std::sqrt(*stiffness / s.mass);
+  s.stiffness = stiffness ? *stiffness : s.mass * omega * omega;
+  const bool has_damping = r.has("damping"), has_ratio = r.has("damping_ratio");
+  if (has_damping && has_ratio) r.fail("damping_ratio", "give only one of 'damping' (N s/m) and 'damping_ratio'");
+  if (!has_damping && !has_ratio)
+    r.fail("damping", "the structure needs 'damping' (N s/m) or 'damping_ratio' (fraction of critical)");
+  if (has_damping) s.damping = r.non_negative("damping", 0.0);
+  else s.damping = 2.0 * r.in_range("damping_ratio", 0.0, 0.0, 1.0) * s.mass * omega;
+  // Finite inputs can still overflow here (mass 1e300, frequency 1e300).
+  if (!(std::isfinite(s.stiffness) && s.stiffness > 0.0))
+    r.fail(frequency ? "frequency" : "stiffness", "gives a stiffness M (2 pi f)^2 that is not a finite number > 0");
+  if (!std::isfinite(s.damping)) r.fail(has_damping ? "damping" : "damping_ratio", "gives an infinite damping");
+  s.tank_width = r.positive("tank_width", s.tank_width);
+  s.tanks = static_cast<int>(r.integer("tanks", s.tanks, 0, 1000000));
+  s.rigid_mass = r.non_negative("rigid_mass", s.rigid_mass);
+  s.ground_from_excitation = r.choice("ground", "none", {"none", "excitation"}) == "excitation";
+  s.initial_displacement = r.number("initial_displacement", s.initial_displacement);
+  s.initial_velocity = r.number("initial_velocity", s.initial_velocity);
+  if (auto load = r.table("load")) s.load = read_structure_load(*load);
+  r.finish();
+  return s;
+}
+
 OutputSpec read_output(TableReader& r) {
   OutputSpec o;
   o.sample_interval = r.positive("sample_interval", o.sample_interval);
@@ -298,6 +380,54 @@ void section(TableReader& root, const std::string& key, bool required, F&& read)
   read(*t);
 }
 
+// Caps on the number of steps, rows and snapshots. Below the resolution of the clock a step no
+// longer advances the time and an output interval never passes it, so such a case would hang
+// (not interruptibly in the settling phase); far above any real run, far below that point.
+template <class Fail>
+void check_counts(const CaseSpec& s, Fail&& fail) {
+  auto count = [](const char* ratio, double n, const char* what, const char* limit) {
+    std::ostringstream m;
+    m << ratio << " = " << std::setprecision(3) << n << " " << what << " (limit " << limit << ")";
+    return m.str();
+  };
+  const double steps = s.time.end / s.time.dt, settle_steps = s.time.settle / s.time.dt;
+  if (!(steps <= 1e10)) fail("time.dt", count("too small: time.end / dt", steps, "time steps", "1e10"));
+  if (!(settle_steps <= 1e10))
+    fail("time.settle", count("too long: time.settle / time.dt", settle_steps, "settling steps", "1e10"));
+  const double rows = s.time.end / s.output.sample_interval;
+  if (!(rows <= 1e8))
+    fail("output.sample_interval", count("too small: time.end / sample_interval", rows, "rows of timeseries.csv", "1e8"));
+  if (s.output.snapshot_interval > 0.0) {
+    const double files = s.time.end / s.output.snapshot_interval;
+    if (!(files <= 1e6))
+      fail("output.snapshot_interval",
+           count("too small: time.end / snapshot_interval", files, "snapshot files", "1e6; 0 writes none"));
+  }
+}
+
+// With [structure] the tank moves with the structure: [excitation] can only be the ground
+// motion under the structure (structure.ground = "excitation"), a horizontal translation.
+void check_structure_consistency(const CaseSpec& s) {
+  if (!s.structure) return;
+  auto fail = [&](const std::string& key, const std::string& what) { throw InputError(s.where(key), key, what); };
+  const StructureLoadSpec& load = s.structure->load;
+  if (load.type == StructureLoadType::noise && load.target_peak_mg && !(s.structure->damping > 0.0))
+    fail("structure.load.target_peak_mg", "scales the noise by the response of the damped structure alone; an undamped "
+                                          "structure has no finite response to white noise: give damping > 0 or 'rms'");
+  const bool excited = s.excitation.type != ExcitationType::none;
+  if (s.structure->ground_from_excitation) {
+    if (!excited)
+      fail("structure.ground", "is \"excitation\" but the case has no [excitation] to be the ground motion");
+    if (s.excitation.type == ExcitationType::pitch)
+      fail("excitation.type", "a pitch cannot be the ground motion of the structure (a horizontal translation); "
+                              "use harmonic, record, pulse or noise");
+  } else if (excited) {
+    fail("excitation.type", "with [structure] the tank moves with the structure, so [excitation] cannot also move it: "
+                            "remove [excitation], or set structure.ground = \"excitation\" to make it the ground "
+                            "motion under the structure (seismic), or load the structure through [structure.load]");
+  }
+}
+
 // Checks that involve several sections.
 void check_consistency(const CaseSpec& s, TableReader& root) {
   auto fail = [&](const std::string& key, const std::string& what) {
@@ -307,6 +437,27 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
   if (s.fill.depth >= s.tank.height)
     fail("fill.depth", "the fluid (" + std::to_string(s.fill.depth) + " m) is deeper than the tank is high (tank.height = " +
                            std::to_string(s.tank.height) + " m)");
+  if (s.tank.shape == "polyline" && !s.tank.points.empty()) {
+    // tank.height of a polyline is its full extent; the water must stay below the lower of
+    // the two wall tops (its first and last points). A wall whose end is its lowest point
+    // (top <= 0) is malformed: the tank geometry reports that with a better message.
+    double y_min = s.tank.points.front().y;
+    for (const Vec2& q : s.tank.points) y_min = std::min(y_min, q.y);
+    const double top = std::min(s.tank.points.front().y, s.tank.points.back().y) - y_min;
+    if (top > 0.0 && s.fill.depth >= top)
+      fail("fill.depth", "the fluid (" + std::to_string(s.fill.depth) + " m) is deeper than the lower wall top of "
+                         "tank.points (" + std::to_string(top) + " m above the lowest point)");
+    // One pool: the still level crosses the wall exactly twice (counted as the still-water
+    // polygon of geometry/tank.cpp counts them, a vertex on the level being above it). Found
+    // only at the end of a run otherwise, by the linear modes of the summary.
+    const double level = y_min + s.fill.depth;
+    int crossings = 0;
+    for (std::size_t k = 0; k + 1 < s.tank.points.size(); ++k)
+      crossings += (s.tank.points[k].y < level) != (s.tank.points[k + 1].y < level);
+    if (top > 0.0 && crossings != 2)
+      fail("fill.depth", "the still level (depth " + std::to_string(s.fill.depth) + " m) meets the wall of tank.points " +
+                             std::to_string(crossings) + " times: only a single pool with one free surface is supported");
+  }
   const double dp = s.particles.dp;
   if (s.fill.depth < 4.0 * dp)
     fail("particles.dp", "too coarse: the fill depth holds fewer than 4 particle layers (depth / dp = " +
@@ -315,14 +466,24 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
     fail("particles.dp", "too coarse: the tank is fewer than 8 particles long");
   const double estimate = (s.tank.length + 2.0 * s.particles.wall_layers * dp) *
                           (s.tank.height + s.particles.wall_layers * dp) / (dp * dp);
-  if (estimate > 2.0e7)
-    fail("particles.dp", "would need about " + std::to_string(static_cast<long long>(estimate)) +
-                             " particles (limit 2e7 in 2D): is dp in metres?");
+  if (estimate > 2.0e7) {
+    // Printed as a double: a huge tank gives an estimate beyond long long (or inf), and that
+    // conversion would be undefined behaviour.
+    std::ostringstream m;
+    m << "would need about " << std::setprecision(3) << estimate << " particles (limit 2e7 in 2D): is dp in metres?";
+    fail("particles.dp", m.str());
+  }
   // Hard stability bound on a fixed step: CFL 0.4 on the gravity-wave speed plus the
   // base velocity, and the viscous bound 0.125 dp^2 / nu. The thesis's own bound
   // (0.1 dp / u_max, section 2.6.3.2) is the adaptive step's; see docs/case-format.md.
-  const double u_ref = std::sqrt(s.fluid.gravity * s.fill.depth) + s.excitation.amplitude * 2.0 * 3.141592653589793 *
-                                                                        s.excitation.frequency.value_or(0.0);
+  // With `beta` the frequency is resolved later (it needs the modal solver); beta times the
+  // deep-water frequency sqrt(pi g / L), an upper bound of a rectangle's omega1, stands in.
+  const double pi = 3.141592653589793;
+  const double omega_bound = s.excitation.frequency ? 2.0 * pi * *s.excitation.frequency
+                             : s.excitation.beta    ? *s.excitation.beta * std::sqrt(pi * s.fluid.gravity / s.tank.length)
+                                                    : 0.0;
+  const double base_speed = s.excitation.type == ExcitationType::harmonic ? s.excitation.amplitude * omega_bound : 0.0;
+  const double u_ref = std::sqrt(s.fluid.gravity * s.fill.depth) + base_speed;
   const double dt_max = std::min(u_ref > 0.0 ? 0.4 * dp / u_ref : 1e9,
                                  s.fluid.viscosity > 0.0 ? 0.125 * dp * dp / s.fluid.viscosity : 1e9);
   if (s.time.dt > dt_max) {
@@ -333,6 +494,8 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
   }
   if (s.output.sample_interval > s.time.end)
     fail("output.sample_interval", "is longer than the simulation (time.end)");
+  check_counts(s, fail);
+  check_structure_consistency(s);
 }
 
 CaseSpec read_root(toml::table& root, const std::string& source, const std::vector<std::string>& overrides) {
@@ -357,6 +520,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "excitation", false, [&](TableReader& t) { spec.excitation = read_excitation(t); });
   section(r, "probes", false, [&](TableReader& t) { read_probes(t, spec); });
   read_screens(r, spec);
+  section(r, "structure", false, [&](TableReader& t) { spec.structure = read_structure(t); });
   section(r, "output", false, [&](TableReader& t) { spec.output = read_output(t); });
   section(r, "run", false, [&](TableReader& t) { spec.run = read_run(t); });
   r.finish();
@@ -457,6 +621,9 @@ static toml::table scheme_table(const SchemeSpec& x) {
     t.insert("ct", x.ct);
     t.insert("solver_tolerance", x.solver_tolerance);
     t.insert("solver_max_iterations", x.solver_max_iterations);
+    t.insert("repulsive_walls", x.repulsive_walls);
+    t.insert("repulsive_coefficient", x.repulsive_coefficient);
+    t.insert("repulsive_range", x.repulsive_range);
     return t;
   }
   const WcsphSpec& w = x.wcsph;
@@ -533,6 +700,55 @@ static toml::table excitation_table(const ExcitationSpec& x) {
   return e;
 }
 
+static toml::table structure_table(const StructureSpec& x) {
+  toml::table t{{"mass", x.mass},
+                {"stiffness", x.stiffness},
+                {"damping", x.damping},
+                {"tank_width", x.tank_width},
+                {"tanks", x.tanks},
+                {"rigid_mass", x.rigid_mass},
+                {"ground", x.ground_from_excitation ? "excitation" : "none"},
+                {"initial_displacement", x.initial_displacement},
+                {"initial_velocity", x.initial_velocity}};
+  const StructureLoadSpec& l = x.load;
+  toml::table load;
+  switch (l.type) {
+    case StructureLoadType::none:
+      load.insert("type", "none");
+      break;
+    case StructureLoadType::harmonic:
+      load.insert("type", "harmonic");
+      load.insert("amplitude", l.amplitude);
+      load.insert("frequency", l.frequency);
+      load.insert("ramp", l.ramp);
+      break;
+    case StructureLoadType::noise:
+      load.insert("type", "noise");
+      load.insert("seed", static_cast<std::int64_t>(l.seed));
+      load.insert("band", toml::array{l.band_low, l.band_high});
+      if (l.target_peak_mg) load.insert("target_peak_mg", *l.target_peak_mg);
+      if (l.rms) load.insert("rms", *l.rms);
+      load.insert("peak_duration", l.peak_duration);
+      break;
+    case StructureLoadType::record:
+      load.insert("type", "record");
+      load.insert("file", l.file);
+      load.insert("scale", l.scale);
+      load.insert("time_scale", l.time_scale);
+      load.insert("start", l.start);
+      break;
+    case StructureLoadType::pulse:
+      load.insert("type", "pulse");
+      load.insert("shape", l.shape);
+      load.insert("amplitude", l.amplitude);
+      load.insert("period", l.period);
+      load.insert("start", l.start);
+      break;
+  }
+  t.insert("load", load);
+  return t;
+}
+
 std::string resolved_case_toml(const CaseSpec& s) {
   toml::table root;
   if (!s.title.empty()) root.insert("title", s.title);
@@ -577,7 +793,11 @@ std::string resolved_case_toml(const CaseSpec& s) {
       t.insert("to", toml::array{sc.to.x, sc.to.y});
     }
     t.insert("model", sc.model == ScreenModel::morison ? "morison" : sc.model == ScreenModel::explicit_slats ? "explicit" : "ergun");
-    t.insert("solidity", sc.solidity);
+    // A solidity derived from the slats is left to be derived again: written out, it would be
+    // range-checked as a given solidity (< 0.999) and a solid baffle's copy would be refused.
+    const bool derived = sc.slat_height > 0.0 && sc.slat_gap > 0.0 &&
+                         sc.solidity == sc.slat_height / (sc.slat_height + sc.slat_gap);
+    if (!derived) t.insert("solidity", sc.solidity);
     if (sc.slat_height > 0.0) t.insert("slat_height", sc.slat_height);
     if (sc.slat_gap > 0.0) t.insert("slat_gap", sc.slat_gap);
     t.insert("thickness", sc.thickness);
@@ -587,6 +807,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
     screens.push_back(t);
   }
   if (!screens.empty()) root.insert("screens", screens);
+  if (s.structure) root.insert("structure", structure_table(*s.structure));
   root.insert("output", toml::table{{"sample_interval", s.output.sample_interval},
                                     {"snapshot_interval", s.output.snapshot_interval},
                                     {"snapshot_walls", s.output.snapshot_walls},

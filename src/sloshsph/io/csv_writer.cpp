@@ -1,6 +1,9 @@
 #include "sloshsph/io/csv_writer.hpp"
 
+#include "sloshsph/io/files.hpp"
+
 #include <cerrno>
+#include <fstream>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -24,6 +27,26 @@ CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& co
   header += "\n";
   std::fputs(header.c_str(), file_);
   std::fflush(file_);
+}
+
+CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns, std::size_t keep_rows)
+    : columns_(columns.size()), path_(path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path + " to continue it");
+  std::string header, line, kept;
+  std::getline(in, header);
+  std::string expected;
+  for (std::size_t k = 0; k < columns.size(); ++k) expected += (k ? "," : "") + columns[k];
+  if (header != expected) throw std::runtime_error(path + ": its columns differ from the run's");
+  kept = header + "\n";
+  for (std::size_t r = 0; r < keep_rows; ++r) {
+    if (!std::getline(in, line)) throw std::runtime_error(path + ": fewer rows than the checkpoint recorded");
+    kept += line + "\n";
+  }
+  in.close();
+  write_file_atomic(path, kept);
+  file_ = std::fopen(path.c_str(), "a");
+  if (!file_) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
 }
 
 CsvWriter::~CsvWriter() {

@@ -12,6 +12,10 @@ namespace sloshsph {
 class CsvWriter {
  public:
   CsvWriter(const std::string& path, const std::vector<std::string>& columns);
+  // Continues an existing file (a resumed run): keeps the header, which must name `columns`,
+  // and the first `keep_rows` rows, drops any later ones (written after the checkpoint),
+  // then appends. Throws std::runtime_error when the file is missing or shorter.
+  CsvWriter(const std::string& path, const std::vector<std::string>& columns, std::size_t keep_rows);
   ~CsvWriter();
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;

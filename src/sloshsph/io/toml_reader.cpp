@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
@@ -65,6 +67,19 @@ bool is_index(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
+// A TOML number as a double. toml++'s value<double>() is empty for an integer beyond 2^53
+// (not exactly representable), which .value() would turn into std::bad_optional_access.
+double to_double(const toml::node& n) {
+  if (const auto i = n.value_exact<std::int64_t>()) return static_cast<double>(*i);
+  return n.value<double>().value_or(std::numeric_limits<double>::quiet_NaN());
+}
+
+// The value of an index segment; one too long for std::stoul (which would throw
+// std::out_of_range, an "internal error") saturates, to be reported as out of range.
+std::size_t index_value(const std::string& s) {
+  return s.size() > 9 ? std::numeric_limits<std::size_t>::max() : std::stoul(s);
+}
+
 }  // namespace
 
 TableReader::TableReader(const toml::table& table, std::string prefix, std::shared_ptr<TomlContext> context)
@@ -94,7 +109,7 @@ const toml::node* TableReader::node(const std::string& key) {
 
 double TableReader::as_number(const std::string& key, const toml::node& n) const {
   if (!n.is_number()) fail(key, "expected a number, got " + show(n));
-  const double v = n.value<double>().value();
+  const double v = to_double(n);
   if (!std::isfinite(v)) fail(key, "expected a finite number, got " + show(n));
   return v;
 }
@@ -204,7 +219,7 @@ std::optional<Vec2> TableReader::optional_point(const std::string& key) {
   const toml::array* a = n->as_array();
   if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
     fail(key, "expected a point [x, y] of two numbers, got " + show(*n));
-  const Vec2 p{(*a)[0].value<double>().value(), (*a)[1].value<double>().value()};
+  const Vec2 p{to_double((*a)[0]), to_double((*a)[1])};
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(key, "expected finite coordinates");
   return p;
 }
@@ -219,7 +234,7 @@ std::vector<Vec2> TableReader::points(const std::string& key) {
     const toml::array* p = (*a)[k].as_array();
     if (!p || p->size() != 2 || !(*p)[0].is_number() || !(*p)[1].is_number())
       fail(key, "point " + std::to_string(k + 1) + " is not [x, y] with two numbers");
-    out.push_back({(*p)[0].value<double>().value(), (*p)[1].value<double>().value()});
+    out.push_back({to_double((*p)[0]), to_double((*p)[1])});
   }
   return out;
 }
@@ -300,7 +315,7 @@ void apply_override(toml::table& root, const std::string& assignment, TomlContex
       if (!t->contains(seg)) t->insert(seg, toml::table{});
       cur = t->get(seg);
     } else if (toml::array* a = cur->as_array(); a && is_index(seg)) {
-      const std::size_t idx = std::stoul(seg);
+      const std::size_t idx = index_value(seg);
       if (idx >= a->size())
         throw InputError(context.file + " (--set " + assignment + ")", key, "index " + seg + " is out of range (" + std::to_string(a->size()) + " entries)");
       cur = a->get(idx);
@@ -311,8 +326,8 @@ void apply_override(toml::table& root, const std::string& assignment, TomlContex
   const std::string& last = parts.back();
   if (toml::table* t = cur->as_table()) {
     t->insert_or_assign(last, *parsed.get("v"));
-  } else if (toml::array* a = cur->as_array(); a && is_index(last) && std::stoul(last) < a->size()) {
-    a->replace(a->begin() + static_cast<std::ptrdiff_t>(std::stoul(last)), *parsed.get("v"));
+  } else if (toml::array* a = cur->as_array(); a && is_index(last) && index_value(last) < a->size()) {
+    a->replace(a->begin() + static_cast<std::ptrdiff_t>(index_value(last)), *parsed.get("v"));
   } else {
     throw InputError(context.file + " (--set " + assignment + ")", key, "the parent of '" + last + "' is not a table");
   }

@@ -19,6 +19,9 @@ class PvdIndex {
  public:
   explicit PvdIndex(std::string path) : path_(std::move(path)) {}
   void add(double time, const std::string& relative_file);
+  const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
+  // A resumed run: the entries up to its checkpoint (the index is rewritten at the next add).
+  void restore(std::vector<std::pair<double, std::string>> entries) { entries_ = std::move(entries); }
 
  private:
   std::string path_;

@@ -9,10 +9,13 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/core/state_io.hpp"
 #include "sloshsph/core/version.hpp"
 #include "sloshsph/io/case_reader.hpp"
 #include "sloshsph/io/csv_writer.hpp"
@@ -20,6 +23,7 @@
 #include "sloshsph/io/vtk_writer.hpp"
 #include "sloshsph/run/progress.hpp"
 #include "sloshsph/run/response.hpp"
+#include "sloshsph/run/structure_summary.hpp"
 #include "sloshsph/run/simulation.hpp"
 
 namespace sloshsph {
@@ -51,7 +55,8 @@ void prepare_directory(const std::string& dir, bool force) {
     if (!fs::is_empty(dir, ec) && !force)
       throw InputError("--out " + dir, "", "the run directory exists and is not empty; choose another --out or pass --force");
     if (force) {
-      for (const char* name : {"timeseries.csv", "summary.json", "run.json", "case.toml", "particles.pvd"})
+      for (const char* name : {"timeseries.csv", "summary.json", "run.json", "case.toml", "particles.pvd",
+                               "response.csv", "admittance.csv", "checkpoint.bin", "report.html"})
         fs::remove(fs::path(dir) / name, ec);
       fs::remove_all(fs::path(dir) / "particles", ec);
     }
@@ -126,40 +131,170 @@ void install_stop_handlers() {
 
 bool stop_requested() { return g_stop.load(); }
 
+namespace {
+
+// Where a run stands between steps, beyond the simulation itself: what a checkpoint adds to
+// the simulation's state so that a resumed run writes exactly what the uninterrupted one would.
+struct RunProgress {
+  double next_sample = 0.0;
+  double next_snapshot = 0.0;
+  double next_checkpoint = 0.0;
+  double checkpoint_every = 0.0;  // s of simulated time (0: only when interrupted)
+  double wall_before = 0.0;  // wall seconds spent before this session (resumed runs)
+  std::size_t csv_rows = 0;  // data rows in timeseries.csv
+  SampledSeries series;
+};
+
+struct RunFiles {
+  std::string dir;
+  nlohmann::json meta;
+  std::unique_ptr<CsvWriter> csv;
+  std::unique_ptr<Snapshots> snaps;
+};
+
+std::string read_text_file(const fs::path& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot read the " + what);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// checkpoint.bin: the case it belongs to, the simulation, then the run's progress.
+void write_checkpoint(const Simulation& sim, const RunProgress& progress, const RunFiles& files, double wall_now) {
+  StateWriter w;
+  w.text("case", read_text_file(fs::path(files.dir) / "case.toml", "case.toml of the run"));
+  sim.save_state(w);
+  w.value("run.next_sample", progress.next_sample);
+  w.value("run.next_snapshot", progress.next_snapshot);
+  w.value("run.next_checkpoint", progress.next_checkpoint);
+  w.value("run.checkpoint_every", progress.checkpoint_every);
+  w.value("run.wall_seconds", wall_now);
+  w.value("run.csv_rows", static_cast<std::uint64_t>(progress.csv_rows));
+  w.value("run.series_columns", static_cast<std::uint64_t>(progress.series.columns.size()));
+  for (const auto& column : progress.series.columns) w.array("run.series", column);
+  w.value("run.snapshots", static_cast<std::uint64_t>(files.snaps->index.entries().size()));
+  for (const auto& [time, name] : files.snaps->index.entries()) {
+    w.value("run.snapshot_time", time);
+    w.text("run.snapshot_file", name);
+  }
+  write_file_atomic((fs::path(files.dir) / "checkpoint.bin").string(), w.bytes());
+}
+
+RunProgress read_progress(StateReader& r, Snapshots& snaps) {
+  RunProgress p;
+  p.next_sample = r.value<double>("run.next_sample");
+  p.next_snapshot = r.value<double>("run.next_snapshot");
+  p.next_checkpoint = r.value<double>("run.next_checkpoint");
+  p.checkpoint_every = r.value<double>("run.checkpoint_every");
+  p.wall_before = r.value<double>("run.wall_seconds");
+  p.csv_rows = static_cast<std::size_t>(r.value<std::uint64_t>("run.csv_rows"));
+  const auto columns = r.value<std::uint64_t>("run.series_columns");
+  for (std::uint64_t k = 0; k < columns; ++k) p.series.columns.push_back(r.array<double>("run.series"));
+  std::vector<std::pair<double, std::string>> entries;
+  const auto count = r.value<std::uint64_t>("run.snapshots");
+  for (std::uint64_t k = 0; k < count; ++k) {
+    const double time = r.value<double>("run.snapshot_time");
+    entries.emplace_back(time, r.text("run.snapshot_file"));
+  }
+  snaps.count = static_cast<int>(entries.size());
+  snaps.index.restore(std::move(entries));
+  return p;
+}
+
+std::vector<std::string> column_names(const Simulation& sim) {
+  std::vector<std::string> names;
+  for (const Column& c : sim.columns()) names.push_back(c.name);
+  return names;
+}
+
+int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress& progress, const RunOptions& options);
+
+}  // namespace
+
 int run_case(const CaseSpec& spec, const RunOptions& options) {
-  const std::string dir = options.out_dir.empty() ? (fs::path("out") / spec.name).string() : options.out_dir;
+  RunFiles files;
+  files.dir = options.out_dir.empty() ? (fs::path("out") / spec.name).string() : options.out_dir;
   // Everything that can reject the case happens before the directory is touched.
   Simulation sim(spec);
-  prepare_directory(dir, options.force);
+  prepare_directory(files.dir, options.force);
   for (const std::string& w : sim.scene().warnings) std::fprintf(stderr, "sloshsph: warning: %s\n", w.c_str());
+  write_file_atomic((fs::path(files.dir) / "case.toml").string(), resolved_case_toml(spec));
+  files.meta = run_metadata(spec, options);
+  write_file_atomic((fs::path(files.dir) / "run.json").string(), files.meta.dump(2) + "\n");
+  files.csv = std::make_unique<CsvWriter>((fs::path(files.dir) / "timeseries.csv").string(), column_names(sim));
+  files.snaps = std::make_unique<Snapshots>(
+      Snapshots{files.dir, spec.output.snapshot_walls, PvdIndex((fs::path(files.dir) / "particles.pvd").string())});
+  RunProgress progress;
+  const std::vector<double> row = sim.sample();
+  files.csv->write_row(row);
+  progress.series.add(row);
+  progress.csv_rows = 1;
+  if (spec.output.snapshot_interval > 0.0) files.snaps->write(sim.particles(), 0.0);
+  progress.next_sample = spec.output.sample_interval;
+  progress.next_snapshot = spec.output.snapshot_interval;
+  progress.checkpoint_every = options.checkpoint_every;
+  progress.next_checkpoint = options.checkpoint_every;
+  return run_loop(spec, sim, files, progress, options);
+}
 
-  const auto start = std::chrono::steady_clock::now();
-  write_file_atomic((fs::path(dir) / "case.toml").string(), resolved_case_toml(spec));
-  nlohmann::json meta = run_metadata(spec, options);
-  write_file_atomic((fs::path(dir) / "run.json").string(), meta.dump(2) + "\n");
-
-  std::vector<std::string> names;
-  nlohmann::json units = nlohmann::json::object();
-  for (const Column& c : sim.columns()) {
-    names.push_back(c.name);
-    units[c.name] = c.unit;
+int resume_run(const std::string& dir, const RunOptions& options) {
+  const fs::path case_path = fs::path(dir) / "case.toml";
+  const fs::path checkpoint = fs::path(dir) / "checkpoint.bin";
+  std::error_code ec;
+  if (!fs::is_regular_file(case_path, ec)) throw InputError(dir, "", "not a run directory (no case.toml)");
+  if (!fs::is_regular_file(checkpoint, ec))
+    throw InputError(dir, "", "no checkpoint.bin to resume from (a completed run has none; a run writes one with "
+                              "--checkpoint-every, and when interrupted)");
+  const std::string case_text = read_text_file(case_path, "case.toml of the run");
+  CaseSpec spec = resolve_case(read_case_file(case_path.string(), {}));
+  StateReader reader(read_text_file(checkpoint, "checkpoint"), checkpoint.string());
+  if (reader.text("case") != case_text)
+    throw InputError(case_path.string(), "", "case.toml changed since the checkpoint was written; refusing to resume");
+  Simulation sim(spec);
+  sim.load_state(reader);
+  RunFiles files;
+  files.dir = dir;
+  files.snaps = std::make_unique<Snapshots>(
+      Snapshots{dir, spec.output.snapshot_walls, PvdIndex((fs::path(dir) / "particles.pvd").string())});
+  RunProgress progress = read_progress(reader, *files.snaps);
+  if (!reader.at_end()) throw InputError(checkpoint.string(), "", "trailing data after the last record");
+  files.csv = std::make_unique<CsvWriter>((fs::path(dir) / "timeseries.csv").string(), column_names(sim),
+                                          progress.csv_rows);
+  try {
+    files.meta = nlohmann::json::parse(read_text_file(fs::path(dir) / "run.json", "run.json"));
+  } catch (const nlohmann::json::exception&) {
+    files.meta = run_metadata(spec, options);
   }
-  CsvWriter csv((fs::path(dir) / "timeseries.csv").string(), names);
-  Snapshots snaps{dir, spec.output.snapshot_walls, PvdIndex((fs::path(dir) / "particles.pvd").string())};
-  Progress progress(spec.time.end, options.progress);
+  files.meta["resumed"].push_back({{"at_time_s", sim.time()}, {"started", now_iso8601()}, {"command", options.command_line},
+                                   {"threads", omp_get_max_threads()}});
+  write_file_atomic((fs::path(dir) / "run.json").string(), files.meta.dump(2) + "\n");
+  std::fprintf(stderr, "sloshsph: resuming %s at t = %.6g s (step %zu)\n", dir.c_str(), sim.time(), sim.steps());
+  // The resumed run keeps checkpointing as planned (the same times: the results do not depend
+  // on where a run was interrupted), unless --checkpoint-every gives a new interval.
+  if (options.checkpoint_every > 0.0 && options.checkpoint_every != progress.checkpoint_every) {
+    progress.checkpoint_every = options.checkpoint_every;
+    progress.next_checkpoint = sim.time() + options.checkpoint_every;
+  }
+  return run_loop(spec, sim, files, progress, options);
+}
 
-  SampledSeries series;
+namespace {
+
+int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress& progress, const RunOptions& options) {
+  const std::string& dir = files.dir;
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return progress.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  Progress bar(spec.time.end, options.progress);
   auto write_sample = [&] {
     const std::vector<double> row = sim.sample();
-    csv.write_row(row);
-    series.add(row);
+    files.csv->write_row(row);
+    progress.series.add(row);
+    ++progress.csv_rows;
   };
-  write_sample();
   const bool snapshots = spec.output.snapshot_interval > 0.0;
-  if (snapshots) snaps.write(sim.particles(), 0.0);
-  double next_sample = spec.output.sample_interval;
-  double next_snapshot = spec.output.snapshot_interval;
   const double tol = 1e-9;
+  const double every = progress.checkpoint_every;
 
   std::string status = "completed", failure;
   int code = kExitSuccess;
@@ -168,29 +303,37 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
       if (stop_requested()) {
         status = "interrupted";
         code = kExitInterrupted;
+        write_checkpoint(sim, progress, files, elapsed());
         break;
       }
       sim.step();
-      if (sim.time() >= next_sample - tol || sim.finished()) {
+      if (sim.time() >= progress.next_sample - tol || sim.finished()) {
         write_sample();
-        while (next_sample <= sim.time() + tol) next_sample += spec.output.sample_interval;
+        while (progress.next_sample <= sim.time() + tol) progress.next_sample += spec.output.sample_interval;
       }
-      if (snapshots && sim.time() >= next_snapshot - tol) {
-        snaps.write(sim.particles(), sim.time());
-        while (next_snapshot <= sim.time() + tol) next_snapshot += spec.output.snapshot_interval;
+      if (snapshots && sim.time() >= progress.next_snapshot - tol) {
+        files.snaps->write(sim.particles(), sim.time());
+        while (progress.next_snapshot <= sim.time() + tol) progress.next_snapshot += spec.output.snapshot_interval;
       }
-      progress.update(sim.time(), sim.steps());
+      if (every > 0.0 && sim.time() >= progress.next_checkpoint - tol && !sim.finished()) {
+        while (progress.next_checkpoint <= sim.time() + tol) progress.next_checkpoint += every;
+        write_checkpoint(sim, progress, files, elapsed());
+      }
+      bar.update(sim.time(), sim.steps());
     }
   } catch (const RunFailure& e) {
     status = "failed";
     failure = e.what();
     code = kExitRunFailed;
     write_sample();  // the last good state
-    if (snapshots) snaps.write(sim.particles(), sim.time());
+    if (snapshots) files.snaps->write(sim.particles(), sim.time());
   }
-  progress.finish(sim.time(), sim.steps());
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
+  bar.finish(sim.time(), sim.steps());
+  const double wall_seconds = elapsed();
+  if (status == "completed") fs::remove(fs::path(dir) / "checkpoint.bin");
+  const SampledSeries& series = progress.series;
+  nlohmann::json& meta = files.meta;
+  const double wall = wall_seconds;
   const Particles& p = sim.particles();
   const double total_particles = static_cast<double>(p.size() + sim.leaked());
   nlohmann::json s;
@@ -216,11 +359,20 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   if (spec.excitation.type != ExcitationType::none) s["excitation_omega_rad_s"] = spec.excitation.omega;
   s["neighbour_list_builds"] = sim.scheme().neighbours().builds();
   s["memory_bytes_per_particle"] = static_cast<double>(sim.scheme().memory_bytes()) / total_particles;
+  nlohmann::json units = nlohmann::json::object();
+  for (const Column& c : sim.columns()) units[c.name] = c.unit;
   s["columns"] = units;
   s["version"] = kVersion;
   s["git_revision"] = kGitRevision;
   if (nlohmann::json response = analyse_response(spec, sim, series, dir); !response.is_null())
     s["response"] = response;
+  if (spec.structure && !series.columns.empty()) {
+    // RMS and peak response, and for noise loads the admittance and effective damping.
+    const StructureSeries ss = structure_series(column_names(sim), series.columns);
+    s["structure"] = structure_summary(ss, *spec.structure);
+    if (auto a = structure_admittance(ss, *spec.structure))
+      write_file_atomic((fs::path(dir) / "admittance.csv").string(), admittance_csv(*a));
+  }
   if (!failure.empty()) s["failure"] = failure;
   if (!sim.scene().warnings.empty()) s["warnings"] = sim.scene().warnings;
   if (sim.leaked() > 0) {
@@ -245,4 +397,5 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   return code;
 }
 
+}  // namespace
 }  // namespace sloshsph

@@ -29,7 +29,7 @@ double reference_omega(const CaseSpec& spec) {
 
 CaseSpec resolve_case(CaseSpec spec) {
   ExcitationSpec& e = spec.excitation;
-  if (e.type == ExcitationType::harmonic) {
+  if (e.type == ExcitationType::harmonic || e.type == ExcitationType::pitch) {
     if (e.frequency) e.omega = 2.0 * std::numbers::pi * *e.frequency;
     else e.omega = *e.beta * reference_omega(spec);
     if (!(e.omega > 0.0) || !std::isfinite(e.omega))
@@ -52,7 +52,23 @@ Simulation::Simulation(const CaseSpec& spec)
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
   settle();
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
+  if (spec_.structure) {
+    // The structure is released at t = 0 with the settled fluid at rest in the tank.
+    structure_.emplace(*spec_.structure, spec_.time.end);
+    structure_->set_fluid_mass(fluid_mass());
+    structure_->start(base_.at(0.0).acceleration.x);
+  }
   build_columns();
+}
+
+BaseMotion Simulation::tank_motion() const {
+  BaseMotion m = base_.at(time_);
+  if (!structure_) return m;
+  // The tank is fixed to the structure: ground motion plus the structure's relative motion.
+  m.displacement.x += structure_->displacement();
+  m.velocity.x += structure_->velocity();
+  m.acceleration.x = structure_->absolute_acceleration();
+  return m;
 }
 
 void Simulation::build_columns() {
@@ -75,6 +91,14 @@ void Simulation::build_columns() {
                                    {"max_speed", "m/s"},
                                    {"dt", "s"},
                                    {"ppe_iterations", "1"}});
+  if (structure_)
+    columns_.insert(columns_.end(), {{"x_s", "m"},
+                                     {"v_s", "m/s"},
+                                     {"a_s", "m/s^2"},
+                                     {"F_TLD", "N"},
+                                     {"F_e", "N"},
+                                     {"E_s", "J"},
+                                     {"E_TLD", "J"}});
 }
 
 // time.settle: before t = 0 the fluid settles under gravity alone (no excitation) while its
@@ -111,11 +135,11 @@ double Simulation::next_dt() const {
     const double cfl = spec_.time.cfl;
     if (max_speed_ > 0.0) dt = std::min(dt, cfl * dp / max_speed_);
     if (spec_.fluid.viscosity > 0.0) dt = std::min(dt, cfl * dp * dp / spec_.fluid.viscosity);
-    const Vec2 body = frame_force(spec_.fluid.gravity, base_.at(time_)).uniform;
+    const Vec2 body = frame_force(spec_.fluid.gravity, tank_motion()).uniform;
     if (norm(body) > 0.0) dt = std::min(dt, 0.25 * std::sqrt(scene_.h / norm(body)));
   }
   // An explicit (weakly compressible) scheme takes its own CFL step; time.dt caps it.
-  if (const auto stable = scheme_.stable_dt(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(time_))))
+  if (const auto stable = scheme_.stable_dt(scene_.particles, frame_force(spec_.fluid.gravity, tank_motion())))
     dt = std::min(dt, *stable);
   return std::min(dt, spec_.time.end - time_);
 }
@@ -123,9 +147,18 @@ double Simulation::next_dt() const {
 void Simulation::step() {
   const double dt = next_dt();
   if (!(dt > 0.0)) return;
-  const BaseMotion before = base_.at(time_);
+  const BaseMotion before = tank_motion();
   // Body force at the middle of the step: second-order in time for the imposed motion.
-  const BaseMotion mid = base_.at(time_ + 0.5 * dt);
+  BaseMotion mid = base_.at(time_ + 0.5 * dt);
+  std::optional<StructureCoupling> structure_before;  // restored if the fluid step fails
+  if (structure_) {
+    structure_before = structure_;
+    // Thesis 4.2.3: the structure moves first (with the sloshing force of the last step), the
+    // fluid then feels the structure's mean absolute acceleration over the step (a_n + a_n+1)/2,
+    // which is exactly Newmark's velocity change / dt (run/structure_coupling.hpp).
+    structure_->advance(dt, sloshing_force_, base_.at(time_ + dt).acceleration.x);
+    mid.acceleration.x = 0.5 * (before.acceleration.x + structure_->absolute_acceleration());
+  }
   StepInput in;
   in.dt = dt;
   in.frame = frame_force(spec_.fluid.gravity, mid);
@@ -136,14 +169,29 @@ void Simulation::step() {
                   screen_work_, a, screen_loads_);
     };
   }
-  scheme_.step(scene_.particles, in);
+  try {
+    scheme_.step(scene_.particles, in);
+  } catch (...) {
+    if (structure_before) structure_ = std::move(structure_before);
+    throw;
+  }
 
-  const BaseMotion after = base_.at(time_ + dt);
+  BaseMotion after = base_.at(time_ + dt);
+  if (structure_) {
+    after.displacement.x += structure_->displacement();
+    after.velocity.x += structure_->velocity();
+  }
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
   Vec2 wall_force = scheme_.diagnostics().wall_force;
   for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
     wall_force += screen_loads_[e].force_on_fluid;
     acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
+  }
+  if (structure_) {
+    // F_w is the force of the walls ON the fluid (F_wy > 0 carries the weight): the fluid
+    // pushes the tank with -F_w. Sloshing part for the next structure step (thesis 2.6.3.1).
+    sloshing_force_ = wall_force.x - fluid_mass() * mid.acceleration.x;
+    acc_tld_force_ += dt * structure_->tld_force(wall_force.x, mid.acceleration.x);
   }
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
@@ -175,6 +223,7 @@ void Simulation::remove_leaked() {
   for (std::size_t i = 0; i < p.n_fluid; ++i)
     if (out[i]) leaks_.push_back({time_, p.id[i], p.position[i]});
   p.remove_fluid(out);
+  if (structure_) structure_->set_fluid_mass(fluid_mass());  // the added mass follows the fluid
   const double fraction = static_cast<double>(leaks_.size()) / static_cast<double>(scene_.initial_fluid_count);
   if (fraction > spec_.run.max_leaked_fraction) {
     const LeakRecord& first = leaks_.front();
@@ -233,7 +282,7 @@ double Simulation::probe_pressure(std::size_t probe) const {
 
 std::vector<double> Simulation::sample() {
   const Particles& p = scene_.particles;
-  const BaseMotion m = base_.at(time_);
+  const BaseMotion m = tank_motion();
   std::vector<double> v = {time_, m.displacement.x, m.velocity.x, m.acceleration.x};
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) v.push_back(surface_height(k) - gauge_datum_[k]);
   if (!spec_.pressure_probes.empty()) {
@@ -257,18 +306,101 @@ std::vector<double> Simulation::sample() {
     f_w = acc_wall_force_ / acc_dt_;
     a_mean = acc_base_acceleration_ / acc_dt_;
   }
-  double e_kin = 0.0, e_pot = 0.0;
+  double e_kin = 0.0, e_pot = 0.0, momentum_x = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     e_kin += 0.5 * p.mass * norm2(p.velocity[i]);
     e_pot += p.mass * spec_.fluid.gravity * (p.position[i].y - scene_.tank->y_bottom);
+    momentum_x += p.mass * p.velocity[i].x;
   }
   v.insert(v.end(), {f_w.x, f_w.x - mass * a_mean, f_w.y, work_on_fluid_, mass, e_kin, e_pot,
                      static_cast<double>(leaks_.size()), max_speed_, last_dt_,
                      static_cast<double>(scheme_.diagnostics().solver_iterations)});
+  if (structure_) append_structure_values(v, e_kin, momentum_x, e_pot);
   acc_dt_ = 0.0;
   acc_wall_force_ = {};
   acc_base_acceleration_ = 0.0;
+  acc_tld_force_ = 0.0;
   return v;
+}
+
+// x_s, v_s, a_s, F_TLD, F_e, E_s, E_TLD (docs/case-format.md, [structure]). The energies are
+// relative to the ground (absolute without ground motion): E_s = (M v^2 + K x^2)/2 of the
+// structure alone; E_TLD = n b [sum m (u + v_s)^2 / 2 + m g y] + n b m_r v_s^2 / 2, the liquid
+// of all tanks with the tank frame's velocity u turned into the ground frame. With no damping,
+// no load and no ground motion E_s + E_TLD is conserved but for the fluid's own dissipation.
+void Simulation::append_structure_values(std::vector<double>& v, double e_kin, double momentum_x, double e_pot) {
+  const StructureCoupling& s = *structure_;
+  const double vs = s.velocity(), nb = s.tank_factor();
+  const double liquid = e_kin + vs * momentum_x + 0.5 * fluid_mass() * vs * vs + e_pot;
+  const double f_tld = acc_dt_ > 0.0 ? acc_tld_force_ / acc_dt_ : 0.0;
+  v.insert(v.end(), {s.displacement(), vs, s.absolute_acceleration(), f_tld, s.external_force(), s.structure_energy(),
+                     nb * (liquid + 0.5 * s.spec().rigid_mass * vs * vs)});
+}
+
+void save_particles(StateWriter& w, const Particles& p) {
+  w.array("particles.position", p.position);
+  w.array("particles.velocity", p.velocity);
+  w.array("particles.pressure", p.pressure);
+  w.array("particles.pressure_back", p.pressure_back);
+  w.array("particles.density", p.density);
+  w.array("particles.normal", p.normal);
+  w.array("particles.id", p.id);
+  w.value("particles.n_fluid", static_cast<std::uint64_t>(p.n_fluid));
+}
+
+void load_particles(StateReader& r, Particles& p) {
+  p.position = r.array<Vec2>("particles.position");
+  p.velocity = r.array<Vec2>("particles.velocity");
+  p.pressure = r.array<double>("particles.pressure");
+  p.pressure_back = r.array<double>("particles.pressure_back");
+  p.density = r.array<double>("particles.density");
+  p.normal = r.array<Vec2>("particles.normal");
+  p.id = r.array<std::int32_t>("particles.id");
+  p.n_fluid = static_cast<std::size_t>(r.value<std::uint64_t>("particles.n_fluid"));
+}
+
+void Simulation::save_state(StateWriter& w) const {
+  save_particles(w, scene_.particles);
+  scheme_.save_state(w);
+  w.value("sim.time", time_);
+  w.value("sim.steps", static_cast<std::uint64_t>(steps_));
+  w.value("sim.last_dt", last_dt_);
+  w.value("sim.max_speed", max_speed_);
+  w.array("sim.gauge_datum", gauge_datum_);
+  w.array("sim.leaks", leaks_);
+  w.value("sim.acc_dt", acc_dt_);
+  w.value("sim.acc_wall_force", acc_wall_force_);
+  w.value("sim.acc_base_acceleration", acc_base_acceleration_);
+  w.value("sim.work_on_fluid", work_on_fluid_);
+  w.array("sim.acc_screen_force", acc_screen_force_);
+  w.array("sim.screen_loads", screen_loads_);
+  w.value("sim.sloshing_force", sloshing_force_);
+  w.value("sim.acc_tld_force", acc_tld_force_);
+  w.value("sim.has_structure", static_cast<std::uint8_t>(structure_.has_value()));
+  if (structure_) structure_->save_state(w);
+}
+
+void Simulation::load_state(StateReader& r) {
+  load_particles(r, scene_.particles);
+  scheme_.load_state(r);
+  time_ = r.value<double>("sim.time");
+  steps_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.steps"));
+  last_dt_ = r.value<double>("sim.last_dt");
+  max_speed_ = r.value<double>("sim.max_speed");
+  gauge_datum_ = r.array<double>("sim.gauge_datum");
+  leaks_ = r.array<LeakRecord>("sim.leaks");
+  acc_dt_ = r.value<double>("sim.acc_dt");
+  acc_wall_force_ = r.value<Vec2>("sim.acc_wall_force");
+  acc_base_acceleration_ = r.value<double>("sim.acc_base_acceleration");
+  work_on_fluid_ = r.value<double>("sim.work_on_fluid");
+  acc_screen_force_ = r.array<Vec2>("sim.acc_screen_force");
+  screen_loads_ = r.array<ScreenElementLoad>("sim.screen_loads");
+  sloshing_force_ = r.value<double>("sim.sloshing_force");
+  acc_tld_force_ = r.value<double>("sim.acc_tld_force");
+  const bool has_structure = r.value<std::uint8_t>("sim.has_structure") != 0;
+  if (has_structure != structure_.has_value())
+    throw InputError(spec_.source, "structure", "the checkpoint and the case disagree on [structure]");
+  if (structure_) structure_->load_state(r);
 }
 
 }  // namespace sloshsph

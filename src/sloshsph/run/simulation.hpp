@@ -2,14 +2,17 @@
 // One simulation in memory: scene, scheme, excitation and observers, advanced step by
 // step. The command line (run_case) and the tests drive it the same way.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sloshsph/core/case_spec.hpp"
+#include "sloshsph/core/state_io.hpp"
 #include "sloshsph/geometry/scene.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/excitation.hpp"
 #include "sloshsph/physics/porous.hpp"
+#include "sloshsph/run/structure_coupling.hpp"
 #include "sloshsph/schemes/scheme.hpp"
 
 namespace sloshsph {
@@ -59,12 +62,23 @@ class Simulation {
   const Particles& particles() const { return scene_.particles; }
   const AnyScheme& scheme() const { return scheme_; }
   const ScreenParticles& screens() const { return screens_; }
+  // The imposed motion of [excitation]; with [structure] the ground motion under the structure.
   const BaseMotionSource& base() const { return base_; }
+  // The motion of the tank now: the imposed base motion, or the structure's (ground + relative).
+  BaseMotion tank_motion() const;
+  // [structure]: the structure carrying the tank (nullptr without one).
+  const StructureCoupling* structure() const { return structure_ ? &*structure_ : nullptr; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
   std::size_t leaked() const { return leaks_.size(); }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
   double max_speed() const { return max_speed_; }
   double last_dt() const { return last_dt_; }
+  // Checkpoints: everything that evolves (particles, scheme, time, interval sums, leaks, the
+  // structure); the rest is rebuilt from the case. load_state needs a Simulation built from the
+  // same case; a resumed run then continues bitwise as the original would have.
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
+
   double surface_height(std::size_t gauge) const;  // current free-surface y at gauge k
   double probe_pressure(std::size_t probe) const;  // current pressure at probe k
 
@@ -74,6 +88,8 @@ class Simulation {
   void check_state();
   void remove_leaked();
   void build_columns();
+  void append_structure_values(std::vector<double>& values, double kinetic_energy, double momentum_x,
+                               double potential_energy);
 
   CaseSpec spec_;
   Scene scene_;
@@ -99,6 +115,11 @@ class Simulation {
   Vec2 acc_wall_force_;
   double acc_base_acceleration_ = 0.0;
   double work_on_fluid_ = 0.0;  // J/m, integral of F_w dX since t = 0
+  // [structure] (thesis 4.2.3): the SDOF carrying the tank, the sloshing force of the last
+  // fluid step (N/m, fed to the structure in the next one) and the interval sum of dt x F_TLD.
+  std::optional<StructureCoupling> structure_;
+  double sloshing_force_ = 0.0;
+  double acc_tld_force_ = 0.0;
 };
 
 }  // namespace sloshsph

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/tank.hpp"
+#include "sloshsph/physics/wall_repulsion.hpp"
 #include "sloshsph/physics/walls.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/operators.hpp"
@@ -49,7 +51,11 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
       eta2_(0.01 * h * 0.01 * h),
       rho_ref_(spec.fluid.density * spec.particles.dp * spec.particles.dp *
                lattice_number_density(spec.particles.kernel, h, spec.particles.dp)),
-      neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h) {
+      neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h),
+      tank_(spec.tank),
+      tank_where_(spec.where("tank.shape")),
+      still_depth_(spec.fill.depth),
+      gravity_(spec.fluid.gravity) {
   with_kernel(kernel_type_, h, [&](const auto& k) {
     const double dp = dp_;
     const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
@@ -76,6 +82,23 @@ void IsphScheme::update_neighbours(Particles& p) {
   p.permute_fluid(cell_order(p.position, p.n_fluid, neighbours_.search_radius()));
   neighbours_.build(p.position, p.n_fluid);
   diagnostics_.neighbours_rebuilt = true;
+}
+
+// The first layer of the tank walls: sample_walls puts it dp/2 outside the wall surface (the
+// next layers at 3dp/2, ...); explicit screen slats stand inside the section and are left out
+// (the fluid must pass between them). Each gets D = coefficient g max(H_w, h) (eq. 3.18,
+// physics/wall_repulsion.hpp), H_w the still-water depth above it.
+void IsphScheme::mark_repulsive_layer(const Particles& p) {
+  repulsion_strength_.assign(p.n_wall(), 0.0);
+  if (!scheme_.repulsive_walls) return;
+  const TankGeometry tank = make_tank(tank_, tank_where_);
+  const double level = tank.y_bottom + still_depth_;
+  for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
+    const double d = tank.signed_distance(p.position[w]);
+    if (d < 0.0 && d > -dp_)
+      repulsion_strength_[w - p.n_fluid] =
+          scheme_.repulsive_coefficient * gravity_ * std::max(level - p.position[w].y, h_);
+  }
 }
 
 void IsphScheme::initialise(Particles& p, const FrameForce& frame) {
@@ -150,8 +173,10 @@ void sps_stress(const K& k, const Particles& p, const NeighbourList& nl, double 
 // mirrors the stress of particle i (zero normal gradient of tau at the wall).
 template <class K>
 void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, const StepInput& in, double nu,
-                      double eta2, bool turbulence, IsphData& d) {
+                      double eta2, bool turbulence, const std::vector<double>& repulsion, double repulsion_range,
+                      IsphData& d) {
   const double V = p.volume;
+  const bool repulsive = !repulsion.empty();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = p.position[i], ui = p.velocity[i];
@@ -169,8 +194,15 @@ void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, c
         const double sxx = ti.xx + tj.xx, sxy = ti.xy + tj.xy, syy = ti.yy + tj.yy;
         a += Vec2{sxx * rij.x + sxy * rij.y, sxy * rij.x + syy * rij.y} * (V * F);
       }
-      if (p.is_fluid(j)) a_fluid += a;
-      else a_wall += a;
+      if (p.is_fluid(j)) {
+        a_fluid += a;
+        continue;
+      }
+      // Thesis eq. 3.18: the first wall layer repels fluid closer than r0 (a wall force, so it
+      // is part of the base shear).
+      const double strength = repulsive ? repulsion[j - p.n_fluid] : 0.0;
+      if (strength > 0.0) a += thesis_wall_repulsion(rij, strength, repulsion_range);
+      a_wall += a;
     }
     d.wall_acceleration[i] = a_wall;
     d.velocity_old[i] = ui;
@@ -395,7 +427,10 @@ void IsphScheme::step_with(const K& k, Particles& p, const StepInput& in) {
   if (in.extra) in.extra(p, d.extra_acceleration);                                // screens, eq. 2.28
   extrapolate_wall_velocity(k, p, neighbours_, p.velocity);                      // free slip, 2.4.3.1
   if (scheme_.turbulence) sps_stress(k, p, neighbours_, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);  // 2.8-2.9
-  predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence, d);  // eq. 2.10
+  if (scheme_.repulsive_walls && repulsion_strength_.size() != p.n_wall()) mark_repulsive_layer(p);
+  static const std::vector<double> none;
+  predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence,  // eqs. 2.10, 3.18
+                   scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
   predict_position(p, in.dt, d);                                                 // eq. 2.11
   density_and_ppe_source(k, p, neighbours_, in, scheme_.alpha, rho_ref_,     // eqs. 2.12, 2.13, 2.20
                          scheme_.free_surface_threshold, d);

@@ -6,6 +6,7 @@
 // The solver data (per-particle scratch arrays) live in IsphData, apart from the
 // solver; the particle store holds only what persists between steps.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "sloshsph/core/case_spec.hpp"
@@ -47,6 +48,9 @@ class IsphScheme {
   const NeighbourList& neighbours() const { return neighbours_; }
   double reference_density() const { return rho_ref_; }
   double h() const { return h_; }
+  // Checkpoints: besides the particles, ISPH keeps only its neighbour list between steps.
+  void save_state(StateWriter& w) const { neighbours_.save(w); }
+  void load_state(StateReader& r) { neighbours_.load(r); }
   std::size_t memory_bytes() const;
 
  private:
@@ -55,6 +59,15 @@ class IsphScheme {
   template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
   void update_neighbours(Particles& p);
   double clip(double pressure) const;
+  void mark_repulsive_layer(const Particles& p);
+
+  // scheme.repulsive_walls (thesis eq. 3.18): strength D = coefficient g max(H_w, h) of each
+  // wall particle (index w - n_fluid), 0 for those not in the first layer of the tank walls.
+  TankSpec tank_;
+  std::string tank_where_;
+  double still_depth_ = 0.0;  // fill depth above the lowest point
+  double gravity_ = 0.0;
+  std::vector<double> repulsion_strength_;
 
   SchemeSpec scheme_;
   KernelType kernel_type_;

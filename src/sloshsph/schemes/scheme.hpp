@@ -36,6 +36,13 @@ class AnyScheme {
     if (const auto* w = std::get_if<WcsphScheme>(&scheme_)) return w->stable_dt(p, f);
     return std::nullopt;
   }
+  // Checkpoints (run/simulation): the scheme's state between steps.
+  void save_state(StateWriter& w) const {
+    std::visit([&](const auto& s) { s.save_state(w); }, scheme_);
+  }
+  void load_state(StateReader& r) {
+    std::visit([&](auto& s) { s.load_state(r); }, scheme_);
+  }
   const WcsphScheme* wcsph() const { return std::get_if<WcsphScheme>(&scheme_); }
 
  private:

@@ -544,4 +544,28 @@ double WcsphScheme::stable_dt(const Particles& p, const FrameForce& frame) const
   return dt;
 }
 
+void WcsphScheme::save_state(StateWriter& w) const {
+  w.array("wcsph.id", data_.id);
+  w.array("wcsph.acceleration", data_.acceleration);
+  w.array("wcsph.density_rate", data_.density_rate);
+  w.array("wcsph.xsph", data_.xsph);
+  w.array("wcsph.position_at_build", data_.position_at_build);
+  w.value("wcsph.max_eddy_viscosity", max_eddy_viscosity_);
+  w.value("wcsph.last_wall_force", last_wall_force_);
+  w.value("wcsph.steps", steps_);
+  neighbours_.save(w);
+}
+
+void WcsphScheme::load_state(StateReader& r) {
+  data_.id = r.array<std::int32_t>("wcsph.id");
+  data_.acceleration = r.array<Vec2>("wcsph.acceleration");
+  data_.density_rate = r.array<double>("wcsph.density_rate");
+  data_.xsph = r.array<Vec2>("wcsph.xsph");
+  data_.position_at_build = r.array<Vec2>("wcsph.position_at_build");
+  max_eddy_viscosity_ = r.value<double>("wcsph.max_eddy_viscosity");
+  last_wall_force_ = r.value<Vec2>("wcsph.last_wall_force");
+  steps_ = r.value<long>("wcsph.steps");
+  neighbours_.load(r);
+}
+
 }  // namespace sloshsph

@@ -23,6 +23,7 @@
 
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/particles.hpp"
+#include "sloshsph/core/state_io.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/physics/kernel_correction.hpp"
 #include "sloshsph/schemes/isph.hpp"  // SymTensor2, lattice_number_density
@@ -80,6 +81,9 @@ class WcsphScheme {
   double stable_dt(const Particles& particles, const FrameForce& frame) const;
 
   double sound_speed() const { return c0_; }
+  // Checkpoints: the state kept between steps (last rates, XSPH, counters, neighbour list).
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
   const NeighbourList& neighbours() const { return neighbours_; }
   // Kernel sum of undisturbed fluid (as IsphScheme::reference_density), for surface detection by

@@ -141,13 +141,18 @@ GroundRecord read_peer_at2(const std::string& path, const std::string& key, doub
                      "not a PEER AT2 file: no 'NPTS= n, DT= dt' line in the first " +
                          std::to_string(kMaxHeaderLines) + " lines (expected 3 text lines, then NPTS and DT)");
   const std::string where = at_line(path, line_no);
-  if (!(npts_d >= 1.0) || npts_d != std::floor(npts_d) || npts_d > 1e9)
-    throw InputError(where, key, "NPTS must be a positive integer");
+  // At least 2 samples, as a CSV record (a single sample has no time step to integrate).
+  if (!(npts_d >= 2.0) || npts_d != std::floor(npts_d) || npts_d > 1e9)
+    throw InputError(where, key, "NPTS must be an integer from 2 to 1e9");
   if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError(where, key, "DT must be a positive time step in seconds");
+  // The sample times i DT must be finite (a DT of 1e308 overflows).
+  if (!std::isfinite(dt * npts_d)) throw InputError(where, key, "NPTS x DT is not a finite duration");
   const auto npts = static_cast<std::size_t>(npts_d);
 
   std::vector<double> values;
-  values.reserve(npts);
+  // NPTS comes from the file: a hostile header (NPTS = 999999999) must not reserve gigabytes
+  // up front (bad_alloc where memory is not overcommitted); the vector grows as values come.
+  values.reserve(std::min<std::size_t>(npts, std::size_t{1} << 20));
   while (read_line(in, line)) {
     ++line_no;
     for (const auto& token : split_fields(line, true)) {
@@ -167,7 +172,11 @@ GroundRecord read_peer_at2(const std::string& path, const std::string& key, doub
                      "the file ends after " + std::to_string(values.size()) + " values, but NPTS = " +
                          std::to_string(npts));
   const double factor = kStandardGravity * scale;  // record in g -> m/s^2
-  for (double& v : values) v *= factor;
+  for (double& v : values) {
+    v *= factor;
+    // A value that is finite in g can overflow once converted (1e308 g).
+    if (!std::isfinite(v)) throw InputError(path, key, "a value times g (and the scale) is not a finite number");
+  }
   rec.dt = dt;
   rec.acceleration = uniform_series(dt, std::move(values));
   return rec;
@@ -202,6 +211,8 @@ TimeSeries read_two_column_csv(const std::string& path, const std::string& key, 
     if (!std::isfinite(t) || !std::isfinite(v)) throw InputError(where, key, "non-finite number");
     t *= options.time_factor;
     v *= options.value_factor * options.scale;
+    if (!std::isfinite(t) || !std::isfinite(v))
+      throw InputError(where, key, "a number is not finite once converted to SI (time or value too large)");
     if (!s.t.empty() && !(t > s.t.back()))
       throw InputError(where, key, "time " + std::to_string(t) + " s is not after the previous row's time");
     s.t.push_back(t);

@@ -90,4 +90,24 @@ std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::si
   return grid.sorted();
 }
 
+void NeighbourList::save(StateWriter& w) const {
+  w.value("neighbours.built", static_cast<std::uint8_t>(built_));
+  w.value("neighbours.builds", static_cast<std::uint64_t>(builds_));
+  w.value("neighbours.n_fluid", static_cast<std::uint64_t>(n_fluid_at_build_));
+  w.array("neighbours.position_at_build", position_at_build_);
+  w.array("neighbours.offset", offset_);
+  w.array("neighbours.index", index_);
+}
+
+void NeighbourList::load(StateReader& r) {
+  built_ = r.value<std::uint8_t>("neighbours.built") != 0;
+  builds_ = static_cast<std::size_t>(r.value<std::uint64_t>("neighbours.builds"));
+  n_fluid_at_build_ = static_cast<std::size_t>(r.value<std::uint64_t>("neighbours.n_fluid"));
+  position_at_build_ = r.array<Vec2>("neighbours.position_at_build");
+  offset_ = r.array<std::size_t>("neighbours.offset");
+  index_ = r.array<std::uint32_t>("neighbours.index");
+  // The grid is a function of the positions at the build: rebuilt, not stored.
+  if (built_) grid_.build(position_at_build_, 0, position_at_build_.size(), support_ + skin_);
+}
+
 }  // namespace sloshsph

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sloshsph/core/state_io.hpp"
 #include "sloshsph/core/vec2.hpp"
 
 namespace sloshsph {
@@ -81,6 +82,11 @@ class NeighbourList {
   std::size_t builds() const { return builds_; }
   const CellGrid& grid() const { return grid_; }
   std::size_t memory_bytes() const;
+
+  // Checkpoints: the list as built (rows, positions at the build), so that a resumed run
+  // rebuilds at exactly the steps the uninterrupted run does (summation order included).
+  void save(StateWriter& w) const;
+  void load(StateReader& r);
 
  private:
   double support_;

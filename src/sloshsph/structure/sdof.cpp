@@ -74,4 +74,17 @@ void Sdof::step(double dt, double external_force, double ground_acceleration) {
 
 double Sdof::mechanical_energy() const { return 0.5 * total_mass() * v_ * v_ + 0.5 * spec_.stiffness * x_ * x_; }
 
+void Sdof::save_state(StateWriter& w) const {
+  const double state[] = {added_mass_, time_, x_, v_, a_, external_force_, force_eff_, ground_acceleration_,
+                          dissipated_, input_work_};
+  w.array("sdof.state", std::vector<double>(std::begin(state), std::end(state)));
+}
+
+void Sdof::load_state(StateReader& r) {
+  const std::vector<double> s = r.array<double>("sdof.state");
+  if (s.size() != 10) throw InputError("checkpoint", "", "SDOF state of the wrong size");
+  added_mass_ = s[0], time_ = s[1], x_ = s[2], v_ = s[3], a_ = s[4];
+  external_force_ = s[5], force_eff_ = s[6], ground_acceleration_ = s[7], dissipated_ = s[8], input_work_ = s[9];
+}
+
 }  // namespace sloshsph

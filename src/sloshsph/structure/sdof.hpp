@@ -4,6 +4,8 @@
 // Newmark's average acceleration method.
 #include <string>
 
+#include "sloshsph/core/state_io.hpp"
+
 namespace sloshsph {
 
 struct SdofSpec {
@@ -75,6 +77,9 @@ class Sdof {
   double mechanical_energy() const;
   double dissipated_energy() const { return dissipated_; }  // sum of dt C vbar^2, J
   double input_work() const { return input_work_; }         // sum of dt vbar Fbar_eff, J
+  // Checkpoints: the whole state (time, x, v, a, forces, added mass, energy sums).
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
 
  private:
   double total_mass() const { return spec_.mass + added_mass_; }
