@@ -47,6 +47,7 @@ Simulation::Simulation(const CaseSpec& spec)
       screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)) {
   acc_screen_force_.assign(screens_.elements.size(), Vec2{});
   screen_loads_.assign(screens_.elements.size(), ScreenElementLoad{});
+  linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
   speed_limit_ = spec_.run.max_speed_factor * std::sqrt(spec_.fluid.gravity * spec_.fill.depth);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));

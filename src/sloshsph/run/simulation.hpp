@@ -72,6 +72,7 @@ class Simulation {
   std::size_t leaked() const { return leaks_.size(); }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
   double max_speed() const { return max_speed_; }
+  double linear_omega() const { return linear_omega_; }  // first_sloshing_omega of the case
   double last_dt() const { return last_dt_; }
   // Checkpoints: everything that evolves (particles, scheme, time, interval sums, leaks, the
   // structure); the rest is rebuilt from the case. load_state needs a Simulation built from the
@@ -106,6 +107,7 @@ class Simulation {
   double last_dt_ = 0.0;
   double max_speed_ = 0.0;
   double speed_limit_ = 0.0;
+  double linear_omega_ = 0.0;
   double c_full_ = 1.0;                  // kernel sum sum_j V W of undisturbed fluid
   std::vector<double> gauge_datum_;      // surface height of each gauge at t = 0
   std::vector<LeakRecord> leaks_;
