@@ -329,11 +329,10 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     if (snapshots) files.snaps->write(sim.particles(), sim.time());
   }
   bar.finish(sim.time(), sim.steps());
-  const double wall_seconds = elapsed();
+  const double wall = elapsed();
   if (status == "completed") fs::remove(fs::path(dir) / "checkpoint.bin");
   const SampledSeries& series = progress.series;
   nlohmann::json& meta = files.meta;
-  const double wall = wall_seconds;
   const Particles& p = sim.particles();
   const double total_particles = static_cast<double>(p.size() + sim.leaked());
   nlohmann::json s;
