@@ -2,6 +2,7 @@
 // The plain, validated description of one simulation, in SI units.
 // io/case_reader fills it from a TOML case file; every later layer reads only this.
 // docs/case-format.md documents each field under its TOML key.
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -29,9 +30,31 @@ struct TankSpec {
   std::vector<Vec2> points;   // m, polyline: the wall from the top left, down, to the top right
 };
 
-struct FillSpec {
-  double depth = 0.0;  // m, still-water depth above the lowest point of the bottom
+// A rectangle of water at rest (a dam-break column, or two levels either side of a screen).
+struct FluidBlock {
+  Vec2 from, to;  // m, lower-left and upper-right corners, in the coordinates of the section
 };
+
+struct FillSpec {
+  // m, still-water depth above the lowest point of the bottom. With blocks: the depth their
+  // water settles to (given, or computed from the blocks' area by the case reader).
+  double depth = 0.0;
+  // Empty: the fluid fills the section below `depth`. Otherwise the fluid is the union of the
+  // blocks, each hydrostatic below its own top.
+  std::vector<FluidBlock> blocks;
+  // m, with blocks: the highest block top above the lowest point (set by the case reader).
+  double block_head = 0.0;
+};
+
+// m, the largest head of water above the lowest point at the start: the depth, or the highest
+// block top.
+inline double fill_head(const FillSpec& f) { return f.blocks.empty() ? f.depth : f.block_head; }
+
+// m/s, the speed scale of the fill: the shallow-water wave speed sqrt(g depth) for still
+// water; the speed sqrt(2 g head) of a particle falling the head for blocks (a collapsing column).
+inline double fill_speed_scale(const FillSpec& f, double gravity) {
+  return f.blocks.empty() ? std::sqrt(gravity * f.depth) : std::sqrt(2.0 * gravity * f.block_head);
+}
 
 enum class KernelType { wendland_c2, cubic_spline };
 
@@ -105,6 +128,9 @@ struct ScreenSpec {
   double spacing = 0.0;          // m, screen particle spacing dp_sc (0: dp)
   double interaction_radius = 0.0;  // m, kernel smoothing length h_sc of the screen (0: 2.5 h)
   double loss_coefficient = 0.0;    // Morison: C_l (0: from the solidity, docs/physics.md)
+  // The fluid velocity at a screen particle: false, the kernel sum of thesis eq. 2.26 (truncated
+  // near walls and the free surface); true, Shepard-normalised (velocity = "shepard").
+  bool shepard_velocity = false;
 };
 
 struct TimeSpec {
@@ -165,6 +191,14 @@ struct GaugeSpec {
 struct PressureProbeSpec {
   std::string name;
   Vec2 position;   // m: x from the left wall, y above the lowest point of the bottom
+};
+
+// The leading edge of a surge along the floor (dam-break front): the furthest fluid particle
+// in `direction` within `band` above the lowest point, plus dp/2 (the particle's own extent).
+struct FrontProbeSpec {
+  std::string name;
+  double band = 0.0;     // m above the lowest point of the bottom; 0: 2 dp
+  bool rightward = true; // direction "right" (largest x) or "left" (smallest x)
 };
 
 struct OutputSpec {
@@ -237,6 +271,7 @@ struct CaseSpec {
   ExcitationSpec excitation;
   std::vector<GaugeSpec> gauges;
   std::vector<PressureProbeSpec> pressure_probes;
+  std::vector<FrontProbeSpec> fronts;
   std::vector<ScreenSpec> screens;
   std::optional<StructureSpec> structure;  // [structure]: the tank moves with an SDOF structure
   OutputSpec output;

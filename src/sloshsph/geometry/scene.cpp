@@ -46,8 +46,10 @@ Scene build_scene(const CaseSpec& spec) {
   scene.h = spec.particles.kernel_ratio * spec.particles.dp;
   scene.still_level = tank->y_bottom + spec.fill.depth;
 
-  std::vector<Vec2> fluid = fill_fluid(*tank, scene.dp, spec.fill.depth);
-  if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
+  const std::vector<FluidBlock>& blocks = spec.fill.blocks;
+  std::vector<Vec2> fluid = blocks.empty() ? fill_fluid(*tank, scene.dp, spec.fill.depth) : fill_blocks(*tank, scene.dp, blocks);
+  const std::string fill_key = blocks.empty() ? "fill.depth" : "fill.blocks";
+  if (fluid.empty()) throw InputError(spec.where(fill_key), fill_key, "no fluid particle fits in the tank");
   std::vector<WallSample> walls = sample_walls(*tank, scene.dp, spec.particles.wall_layers);
   const std::size_t tank_walls = walls.size();
   // Screens: a full-height screen runs from the bottom to the top of the walls at its x;
@@ -93,7 +95,8 @@ Scene build_scene(const CaseSpec& spec) {
   const double rho_g = spec.fluid.density * spec.fluid.gravity;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     p.position[i] = fluid[i];
-    p.pressure[i] = rho_g * (scene.still_level - fluid[i].y);
+    const double surface = blocks.empty() ? scene.still_level : block_surface(blocks, fluid[i]);
+    p.pressure[i] = rho_g * (surface - fluid[i].y);
   }
   for (std::size_t k = 0; k < walls.size(); ++k) {
     const std::size_t i = fluid.size() + k;

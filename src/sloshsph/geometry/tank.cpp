@@ -447,6 +447,32 @@ std::vector<Vec2> fill_fluid(const TankGeometry& tank, double dp, double depth) 
   return out;
 }
 
+namespace {
+
+bool in_block(const FluidBlock& b, Vec2 p) { return p.x >= b.from.x && p.x < b.to.x && p.y >= b.from.y && p.y < b.to.y; }
+
+}  // namespace
+
+std::vector<Vec2> fill_blocks(const TankGeometry& tank, double dp, const std::vector<FluidBlock>& blocks) {
+  std::vector<Vec2> out;
+  const int ni = static_cast<int>(std::ceil((tank.x_max - tank.x_min) / dp));
+  const int nj = static_cast<int>(std::ceil((tank.y_top - tank.y_bottom) / dp));
+  for (int j = 0; j < nj; ++j)
+    for (int i = 0; i < ni; ++i) {
+      const Vec2 p{tank.x_min + (i + 0.5) * dp, tank.y_bottom + (j + 0.5) * dp};
+      const bool inside = std::any_of(blocks.begin(), blocks.end(), [&](const FluidBlock& b) { return in_block(b, p); });
+      if (inside && tank.signed_distance(p) >= 0.5 * dp * (1.0 - 1e-9)) out.push_back(p);
+    }
+  return out;
+}
+
+double block_surface(const std::vector<FluidBlock>& blocks, Vec2 p) {
+  double top = p.y;
+  for (const FluidBlock& b : blocks)
+    if (in_block(b, p)) top = std::max(top, b.to.y);
+  return top;
+}
+
 double surface_width(const TankGeometry& tank, double depth) {
   const double y = tank.y_bottom + depth;
   double left = std::numeric_limits<double>::max(), right = std::numeric_limits<double>::lowest();

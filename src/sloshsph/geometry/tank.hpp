@@ -91,6 +91,14 @@ std::vector<WallSample> sample_walls(const TankGeometry& tank, double dp, int la
 // point, below `depth`, inside the section and at least dp/2 from the wall.
 std::vector<Vec2> fill_fluid(const TankGeometry& tank, double dp, double depth);
 
+// Fluid particles on the same lattice inside the union of the blocks (a lattice node x is in
+// a block when from <= x < to), inside the section and at least dp/2 from the wall.
+std::vector<Vec2> fill_blocks(const TankGeometry& tank, double dp, const std::vector<FluidBlock>& blocks);
+
+// The free surface above p of the water at rest in the blocks: the highest top of the blocks
+// that contain p (p.y if none does). For the initial hydrostatic pressure of a block.
+double block_surface(const std::vector<FluidBlock>& blocks, Vec2 p);
+
 // Still-water free-surface width at `depth` (the lattice-independent length of the surface).
 double surface_width(const TankGeometry& tank, double depth);
 

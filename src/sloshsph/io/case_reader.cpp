@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/io/toml_reader.hpp"
 
 namespace sloshsph {
@@ -27,6 +28,20 @@ FluidSpec read_fluid(TableReader& r) {
   f.density = r.positive("density", f.density);
   f.viscosity = r.non_negative("viscosity", f.viscosity);
   f.gravity = r.non_negative("gravity", f.gravity);
+  r.finish();
+  return f;
+}
+
+// [fill]: depth, and/or [[fill.blocks]] of water at rest. Checked against the tank in
+// resolve_fill, once the particle size is known.
+FillSpec read_fill(TableReader& r) {
+  FillSpec f;
+  for (TableReader& b : r.array_of_tables("blocks")) {
+    f.blocks.push_back({b.point("from"), b.point("to")});
+    b.finish();
+  }
+  if (f.blocks.empty()) f.depth = r.positive("depth");
+  else f.depth = r.optional_positive("depth").value_or(0.0);
   r.finish();
   return f;
 }
@@ -235,6 +250,16 @@ void read_probes(TableReader& r, CaseSpec& spec) {
     p.finish();
     spec.pressure_probes.push_back(ps);
   }
+  names.clear();
+  for (TableReader& f : r.array_of_tables("front")) {
+    FrontProbeSpec fs;
+    fs.name = f.string("name");
+    check_name(f, "name", fs.name, names);
+    fs.band = f.non_negative("band", 0.0);
+    fs.rightward = f.choice("direction", "right", {"right", "left"}) == "right";
+    f.finish();
+    spec.fronts.push_back(fs);
+  }
   r.finish();
 }
 
@@ -269,6 +294,8 @@ void read_screens(TableReader& root, CaseSpec& spec) {
     sc.spacing = r.non_negative("spacing", sc.spacing);
     sc.interaction_radius = r.non_negative("interaction_radius", sc.interaction_radius);
     if (sc.model == ScreenModel::morison) sc.loss_coefficient = r.non_negative("loss_coefficient", 0.0);
+    if (sc.model != ScreenModel::explicit_slats)
+      sc.shepard_velocity = r.choice("velocity", "thesis", {"thesis", "shepard"}) == "shepard";
     r.finish();
     spec.screens.push_back(sc);
   }
@@ -428,6 +455,51 @@ void check_structure_consistency(const CaseSpec& s) {
   }
 }
 
+// Fluid blocks: each inside the tank's extent, at least one particle across, below the wall
+// tops; the settled depth (when not given) from the blocks' area, the head from their tops.
+// The area counted is that of the lattice particles the blocks will hold (geometry/scene), so
+// the settled depth is that of the water actually simulated.
+void resolve_fill(CaseSpec& s) {
+  FillSpec& f = s.fill;
+  if (f.blocks.empty()) return;
+  const TankGeometry tank = make_tank(s.tank, s.where("tank.shape"));
+  const double dp = s.particles.dp;
+  const double top = std::min(tank.wall.front().y, tank.wall.back().y);
+  for (std::size_t k = 0; k < f.blocks.size(); ++k) {
+    const FluidBlock& b = f.blocks[k];
+    const std::string key = "fill.blocks." + std::to_string(k);
+    auto fail = [&](const std::string& sub, const std::string& what) {
+      throw InputError(s.where(key + "." + sub), key + "." + sub, what);
+    };
+    std::ostringstream box;
+    box << "[" << b.from.x << ", " << b.from.y << "] to [" << b.to.x << ", " << b.to.y << "]";
+    if (!(b.to.x > b.from.x && b.to.y > b.from.y))
+      fail("to", "must lie above and to the right of `from` (the block is " + box.str() + ")");
+    if (b.to.x - b.from.x < dp || b.to.y - b.from.y < dp)
+      fail("to", "the block " + box.str() + " is thinner than one particle (dp = " + std::to_string(dp) + " m)");
+    if (b.from.x < tank.x_min - 1e-12 || b.to.x > tank.x_max + 1e-12 || b.from.y < tank.y_bottom - 1e-12)
+      fail("from", "the block " + box.str() + " reaches outside the tank");
+    if (b.to.y >= top)
+      fail("to", "the block " + box.str() + " reaches the top of the walls (y = " + std::to_string(top) + " m)");
+  }
+  const std::size_t count = fill_blocks(tank, dp, f.blocks).size();
+  if (count == 0) throw InputError(s.where("fill.blocks"), "fill.blocks", "no fluid particle fits in the blocks");
+  f.block_head = 0.0;
+  for (const FluidBlock& b : f.blocks) f.block_head = std::max(f.block_head, b.to.y - tank.y_bottom);
+  if (f.depth > 0.0) return;
+  // Settled depth: section_area(depth) = the blocks' water, by bisection (the area grows with
+  // the depth); the wall top bounds it (beyond it, there is more water than the tank holds).
+  const double water = static_cast<double>(count) * dp * dp;
+  double lo = 0.0, hi = top - tank.y_bottom;
+  if (section_area(tank, hi * (1.0 - 1e-9)) < water)
+    throw InputError(s.where("fill.blocks"), "fill.blocks", "the blocks hold more water than the tank");
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (section_area(tank, mid) < water ? lo : hi) = mid;
+  }
+  f.depth = 0.5 * (lo + hi);
+}
+
 // Checks that involve several sections.
 void check_consistency(const CaseSpec& s, TableReader& root) {
   auto fail = [&](const std::string& key, const std::string& what) {
@@ -459,7 +531,7 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
                              std::to_string(crossings) + " times: only a single pool with one free surface is supported");
   }
   const double dp = s.particles.dp;
-  if (s.fill.depth < 4.0 * dp)
+  if (s.fill.blocks.empty() && s.fill.depth < 4.0 * dp)
     fail("particles.dp", "too coarse: the fill depth holds fewer than 4 particle layers (depth / dp = " +
                              std::to_string(s.fill.depth / dp) + ")");
   if (s.tank.length < 8.0 * dp)
@@ -483,13 +555,13 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
                              : s.excitation.beta    ? *s.excitation.beta * std::sqrt(pi * s.fluid.gravity / s.tank.length)
                                                     : 0.0;
   const double base_speed = s.excitation.type == ExcitationType::harmonic ? s.excitation.amplitude * omega_bound : 0.0;
-  const double u_ref = std::sqrt(s.fluid.gravity * s.fill.depth) + base_speed;
+  const double u_ref = fill_speed_scale(s.fill, s.fluid.gravity) + base_speed;
   const double dt_max = std::min(u_ref > 0.0 ? 0.4 * dp / u_ref : 1e9,
                                  s.fluid.viscosity > 0.0 ? 0.125 * dp * dp / s.fluid.viscosity : 1e9);
   if (s.time.dt > dt_max) {
     std::ostringstream m;
     m << "time step " << s.time.dt << " s is above the stability bound " << dt_max
-      << " s (0.4 dp / sqrt(g depth), 0.125 dp^2 / nu)";
+      << " s (0.4 dp / sqrt(g depth), with fill blocks 0.4 dp / sqrt(2 g head); 0.125 dp^2 / nu)";
     fail("time.dt", m.str());
   }
   if (s.output.sample_interval > s.time.end)
@@ -510,10 +582,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   spec.title = r.string("title", "");
   section(r, "fluid", false, [&](TableReader& t) { spec.fluid = read_fluid(t); });
   section(r, "tank", true, [&](TableReader& t) { spec.tank = read_tank(t); });
-  section(r, "fill", true, [&](TableReader& t) {
-    spec.fill.depth = t.positive("depth");
-    t.finish();
-  });
+  section(r, "fill", true, [&](TableReader& t) { spec.fill = read_fill(t); });
   section(r, "particles", true, [&](TableReader& t) { spec.particles = read_particles(t); });
   section(r, "scheme", false, [&](TableReader& t) { spec.scheme = read_scheme(t); });
   section(r, "time", true, [&](TableReader& t) { spec.time = read_time(t); });
@@ -525,6 +594,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "run", false, [&](TableReader& t) { spec.run = read_run(t); });
   r.finish();
   spec.locations = context->locations;
+  resolve_fill(spec);
   check_consistency(spec, r);
   return spec;
 }
@@ -766,7 +836,14 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (s.tank.shape == "sloped" || s.tank.shape == "triangle" || s.tank.shape == "trapezoid") tank.insert("angle", s.tank.angle);
   if (s.tank.shape == "sloped" || s.tank.shape == "trapezoid") tank.insert("bottom_width", s.tank.bottom_width);
   root.insert("tank", tank);
-  root.insert("fill", toml::table{{"depth", s.fill.depth}});
+  toml::table fill{{"depth", s.fill.depth}};
+  if (!s.fill.blocks.empty()) {
+    toml::array blocks;
+    for (const FluidBlock& b : s.fill.blocks)
+      blocks.push_back(toml::table{{"from", toml::array{b.from.x, b.from.y}}, {"to", toml::array{b.to.x, b.to.y}}});
+    fill.insert("blocks", blocks);
+  }
+  root.insert("fill", fill);
   root.insert("particles", toml::table{{"dp", s.particles.dp},
                                        {"kernel_ratio", s.particles.kernel_ratio},
                                        {"wall_layers", s.particles.wall_layers},
@@ -779,9 +856,13 @@ std::string resolved_case_toml(const CaseSpec& s) {
   for (const auto& g : s.gauges) gauges.push_back(toml::table{{"name", g.name}, {"x", g.x}});
   for (const auto& p : s.pressure_probes)
     pressures.push_back(toml::table{{"name", p.name}, {"x", p.position.x}, {"y", p.position.y}});
+  toml::array fronts;
+  for (const auto& f : s.fronts)
+    fronts.push_back(toml::table{{"name", f.name}, {"band", f.band}, {"direction", f.rightward ? "right" : "left"}});
   toml::table probes;
   if (!gauges.empty()) probes.insert("gauge", gauges);
   if (!pressures.empty()) probes.insert("pressure", pressures);
+  if (!fronts.empty()) probes.insert("front", fronts);
   if (!probes.empty()) root.insert("probes", probes);
   toml::array screens;
   for (const ScreenSpec& sc : s.screens) {
@@ -803,6 +884,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
     t.insert("thickness", sc.thickness);
     t.insert("spacing", sc.spacing);
     t.insert("interaction_radius", sc.interaction_radius);
+    if (sc.model != ScreenModel::explicit_slats) t.insert("velocity", sc.shepard_velocity ? "shepard" : "thesis");
     if (sc.model == ScreenModel::morison) t.insert("loss_coefficient", sc.loss_coefficient);
     screens.push_back(t);
   }

@@ -1,6 +1,9 @@
 #pragma once
 // Wave gauges and pressure probes: kernel interpolation of the particle state at fixed
 // points of the tank frame. Methods and their limits are in docs/physics.md.
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "sloshsph/core/particles.hpp"
@@ -64,6 +67,19 @@ double pressure_at(const K& k, const Particles& p, const CellGrid& grid, Vec2 po
   });
   if (fluid * p.volume < 0.1 || den <= 0.0) return 0.0;
   return num / den;
+}
+
+// Surge front (dam-break tip): the largest (rightward) or smallest x of the fluid particles at
+// most `band` above y_floor, moved dp/2 outward (the edge of that particle's own volume).
+// Returns NaN when no fluid particle lies in the band.
+inline double front_position(const Particles& p, double y_floor, double band, bool rightward, double dp) {
+  double edge = rightward ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < p.n_fluid; ++j) {
+    if (p.position[j].y - y_floor > band) continue;
+    edge = rightward ? std::max(edge, p.position[j].x) : std::min(edge, p.position[j].x);
+  }
+  if (!std::isfinite(edge)) return std::numeric_limits<double>::quiet_NaN();
+  return edge + (rightward ? 0.5 * dp : -0.5 * dp);
 }
 
 }  // namespace sloshsph

@@ -112,6 +112,7 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
           spec.loss_coefficient > 0.0 ? spec.loss_coefficient : slat_screen_loss_coefficient(e.solidity);
     }
     e.undisturbed_weight = lattice_weight(e.smoothing_length, dp);
+    e.shepard_velocity = spec.shepard_velocity;
 
     // Equal spacing <= dp_sc; a length that is a whole number of dp_sc (to round-off) keeps dp_sc.
     const std::size_t n =
@@ -183,7 +184,7 @@ void screen_drag(const ScreenParticles& screens, const Particles& p, const std::
     });
     const double uncovered = e.undisturbed_weight - wall;
     const bool wet = fluid > 0.0 && fluid >= screens.wet_fraction * std::max(0.0, uncovered);
-    if (screens.shepard_velocity && fluid > 0.0) u = u / fluid;
+    if (e.shepard_velocity && fluid > 0.0) u = u / fluid;
     work.velocity[j] = u;
     work.fluid_weight[j] = s;
     work.wet_weight[j] = fluid;

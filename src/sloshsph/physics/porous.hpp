@@ -72,6 +72,7 @@ struct ScreenElement {
   double permeability = 0.0; // m^2, K_P (eq. 2.22), ergun
   double loss_coefficient = 0.0;  // C_l, morison
   double undisturbed_weight = 1.0;  // sum_f V_f W_jf of a full fluid lattice of spacing dp
+  bool shepard_velocity = false;    // U_j Shepard-normalised (see ScreenParticles)
   std::size_t first = 0, count = 0; // particle range [first, first + count); count 0 for explicit slats
 };
 
@@ -83,9 +84,9 @@ struct ScreenParticles {
   // A screen particle is "in contact with the fluid" (wet, thesis 2.5.3) when the fluid covers at
   // least this fraction of the part of its kernel not taken by wall particles (see screen_drag).
   double wet_fraction = 0.5;
+  // Per element (ScreenElement::shepard_velocity, from ScreenSpec):
   // false (thesis eq. 2.26): U_j = sum_f V_f u_f W_jf, truncated near walls and the surface.
   // true: Shepard-normalised, U_j = sum_f V_f u_f W_jf / sum_f V_f W_jf.
-  bool shepard_velocity = false;
 
   std::size_t size() const { return position.size(); }
   double max_support() const;

@@ -35,7 +35,8 @@ inline double morris_sound_speed(double u_b, double nu, double l, double F, doub
 }
 
 // The estimate for a case. The case does not know the flow speed, so u_b = sqrt(2 g H) + X0 omega
-// (the speed of a particle falling the fill depth H, plus the base velocity amplitude);
+// (the speed of a particle falling the head H of the fill, its depth or the top of its highest
+// block, plus the base velocity amplitude);
 // l = tank length, F = g + X0 omega^2 (gravity plus the base acceleration amplitude).
 inline SoundSpeedEstimate estimate_sound_speed(const CaseSpec& spec) {
   SoundSpeedEstimate e;
@@ -45,7 +46,7 @@ inline SoundSpeedEstimate estimate_sound_speed(const CaseSpec& spec) {
     base_velocity = spec.excitation.amplitude * spec.excitation.omega;
     base_acceleration = spec.excitation.amplitude * spec.excitation.omega * spec.excitation.omega;
   }
-  e.bulk_velocity = std::sqrt(2.0 * g * spec.fill.depth) + std::abs(base_velocity);
+  e.bulk_velocity = std::sqrt(2.0 * g * fill_head(spec.fill)) + std::abs(base_velocity);
   e.length = spec.tank.length;
   e.force = std::abs(g) + std::abs(base_acceleration);
   e.viscosity = spec.fluid.viscosity;

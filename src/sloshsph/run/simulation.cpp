@@ -48,7 +48,7 @@ Simulation::Simulation(const CaseSpec& spec)
   acc_screen_force_.assign(screens_.elements.size(), Vec2{});
   screen_loads_.assign(screens_.elements.size(), ScreenElementLoad{});
   linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
-  speed_limit_ = spec_.run.max_speed_factor * std::sqrt(spec_.fluid.gravity * spec_.fill.depth);
+  speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
   settle();
@@ -76,6 +76,7 @@ void Simulation::build_columns() {
   columns_ = {{"time", "s"}, {"x_base", "m"}, {"v_base", "m/s"}, {"a_base", "m/s^2"}};
   for (const auto& g : spec_.gauges) columns_.push_back({"eta:" + g.name, "m"});
   for (const auto& p : spec_.pressure_probes) columns_.push_back({"p:" + p.name, "Pa"});
+  for (const auto& f : spec_.fronts) columns_.push_back({"front:" + f.name, "m"});
   for (const auto& e : screens_.elements) {
     if (e.count == 0) continue;  // explicit slats are walls: their force is in F_w
     columns_.push_back({"F_screen:" + e.name, "N/m"});
@@ -260,7 +261,7 @@ void Simulation::check_state() {
       if (norm(p.velocity[i]) > norm(p.velocity[fast])) fast = i;
     std::ostringstream m;
     m << "speed " << max_speed_ << " m/s at t = " << time_ << " s (step " << steps_ << ") exceeds the bound "
-      << speed_limit_ << " m/s (run.max_speed_factor x sqrt(g depth)), fluid particle id " << p.id[fast] << " at ("
+      << speed_limit_ << " m/s (run.max_speed_factor x the fill speed scale), fluid particle id " << p.id[fast] << " at ("
       << p.position[fast].x << ", " << p.position[fast].y << ") m";
     throw RunFailure(m.str());
   }
@@ -292,6 +293,10 @@ std::vector<double> Simulation::sample() {
     with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
       for (const auto& probe : spec_.pressure_probes) v.push_back(pressure_at(k, p, grid, probe.position));
     });
+  }
+  for (const auto& f : spec_.fronts) {
+    const double dp = spec_.particles.dp;
+    v.push_back(front_position(p, scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp, f.rightward, dp));
   }
   for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
     if (screens_.elements[e].count == 0) continue;

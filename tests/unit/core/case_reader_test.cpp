@@ -1,6 +1,7 @@
 // Case files: every key checked, errors name the file, the line and the key.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "sloshsph/core/errors.hpp"
@@ -185,6 +186,70 @@ TEST(CaseReader, FreeSurfaceModelFollowsThePressureSolve) {
             FreeSurfaceModel::thesis);
   expect_error(kMinimal, {"scheme.pressure=explicit", "scheme.free_surface=air"}, "scheme.free_surface",
                "needs pressure = \"implicit\"");
+}
+
+}  // namespace
+}  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+// Two blocks either side of x = 0.25 in the 0.5 m tank of kMinimal, 0.2 m and 0.1 m deep.
+const char* kBlocks = R"(
+[tank]
+shape = "rectangle"
+length = 0.5
+height = 0.4
+
+[fill]
+[[fill.blocks]]
+from = [0.0, 0.0]
+to = [0.25, 0.2]
+[[fill.blocks]]
+from = [0.25, 0.0]
+to = [0.5, 0.1]
+
+[particles]
+dp = 0.01
+
+[time]
+end = 1.0
+dt = 1.0e-3
+)";
+
+TEST(CaseReader, FillBlocksSettleToTheDepthOfTheirWater) {
+  const CaseSpec s = read_case_text(kBlocks, "case.toml");
+  ASSERT_EQ(s.fill.blocks.size(), 2u);
+  // Water 0.25 x 0.2 + 0.25 x 0.1 = 0.075 m^2 over 0.5 m: 0.15 m (the lattice holds it exactly).
+  EXPECT_NEAR(s.fill.depth, 0.15, 1e-9);
+  EXPECT_DOUBLE_EQ(fill_head(s.fill), 0.2);
+  // The speed scale of a collapsing column: sqrt(2 g head).
+  EXPECT_NEAR(fill_speed_scale(s.fill, s.fluid.gravity), std::sqrt(2.0 * 9.81 * 0.2), 1e-12);
+  // A given depth is kept.
+  EXPECT_DOUBLE_EQ(read_case_text(kBlocks, "case.toml", {"fill.depth=0.12"}).fill.depth, 0.12);
+  // And the resolved case reads back to the same blocks.
+  const CaseSpec b = read_case_text(resolved_case_toml(s), "resolved.toml");
+  ASSERT_EQ(b.fill.blocks.size(), 2u);
+  EXPECT_DOUBLE_EQ(b.fill.blocks[1].to.y, 0.1);
+}
+
+TEST(CaseReader, FillBlocksAreChecked) {
+  expect_error(kBlocks, {"fill.blocks.0.to=[0.25, -0.1]"}, "fill.blocks.0.to", "above and to the right");
+  expect_error(kBlocks, {"fill.blocks.1.to=[0.6, 0.1]"}, "fill.blocks.1.from", "outside the tank");
+  expect_error(kBlocks, {"fill.blocks.0.to=[0.25, 0.4]"}, "fill.blocks.0.to", "top of the walls");
+  expect_error(kBlocks, {"fill.blocks.0.to=[0.005, 0.2]"}, "fill.blocks.0.to", "thinner than one particle");
+  expect_error(kBlocks, {"fill.blocks.0.volume=1"}, "fill.blocks.0.volume", "unknown key");
+  // Without blocks the depth is required.
+  expect_error(kMinimal, {"fill.depth=-1"}, "fill.depth", "positive");
+}
+
+TEST(CaseReader, FrontProbeKeys) {
+  const CaseSpec s = read_case_text(kBlocks, "case.toml", {"probes.front=[{name = \"tip\"}]"});
+  ASSERT_EQ(s.fronts.size(), 1u);
+  EXPECT_EQ(s.fronts[0].name, "tip");
+  EXPECT_DOUBLE_EQ(s.fronts[0].band, 0.0);
+  EXPECT_TRUE(s.fronts[0].rightward);
+  expect_error(kBlocks, {"probes.front=[{name = \"tip\", direction = \"up\"}]"}, "probes.front.0.direction", "up");
 }
 
 }  // namespace

@@ -245,6 +245,20 @@ TEST(TankShapes, RectangleFillAndWallsAreLatticeAligned) {
   }
 }
 
+TEST(TankShapes, FluidBlocksFillTheirLatticeNodesOnce) {
+  // An L-shaped union of two overlapping blocks in a 1 m x 0.5 m rectangle, dp = 10 mm:
+  // a column 0.2 m x 0.4 m and a layer 1 m x 0.1 m; the overlap counted once.
+  const double dp = 0.01;
+  const TankGeometry tank = make_tank(rectangle_spec(1.0, 0.5), "test");
+  const std::vector<FluidBlock> blocks = {{{0.0, 0.0}, {0.2, 0.4}}, {{0.0, 0.0}, {1.0, 0.1}}};
+  const std::vector<Vec2> fluid = fill_blocks(tank, dp, blocks);
+  EXPECT_EQ(fluid.size(), 20u * 40u + 80u * 10u);
+  // Hydrostatic heads: the top of the highest block that holds the point.
+  EXPECT_DOUBLE_EQ(block_surface(blocks, {0.105, 0.055}), 0.4);
+  EXPECT_DOUBLE_EQ(block_surface(blocks, {0.505, 0.055}), 0.1);
+  EXPECT_DOUBLE_EQ(block_surface(blocks, {0.505, 0.2}), 0.2);  // outside: its own height
+}
+
 template <class F>
 void expect_input_error(F&& f, const std::string& key, const std::string& label) {
   try {

@@ -249,7 +249,7 @@ TEST(ScreenDrag, ShepardVelocityIsExactForUniformFlow) {
   std::vector<ScreenElementLoad> loads;
   screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
   EXPECT_LT(loads[0].mean_velocity.x, 0.05 * 0.99);  // truncated kernel sums at the ends
-  sp.shepard_velocity = true;
+  sp.elements[0].shepard_velocity = true;
   screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
   for (std::size_t j = 0; j < sp.size(); ++j)
     if (work.wet[j]) {
