@@ -7,6 +7,7 @@
 #include "sloshsph/analysis/filter.hpp"
 #include "sloshsph/analysis/steady_state.hpp"
 #include "sloshsph/linear/rectangular.hpp"
+#include "sloshsph/physics/porous.hpp"
 
 namespace sloshsph {
 namespace {
@@ -57,6 +58,88 @@ TEST(Validation, TaitScreensDampTheResonance) {
   EXPECT_LT(screens.eta_max, none.eta_max);
   EXPECT_GT(screens.energy, 0.0);
   EXPECT_GT(screens.energy, none.energy);
+}
+
+}  // namespace
+}  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+// The flow: cases/ergun_utube.toml, levels 0.16 m and 0.08 m either side of a screen of
+// solidity 0.8, 20 mm thick, in a 0.4 m tank, dp = 5 mm. The screen's drag dominates the
+// inertia of the water (rho L du/dt is about 1% of the drop), so the flow is quasi-steady: at
+// each instant the level difference dh drives through the screen the flux Ergun's law allows,
+//   Q(dh) = u(rho g dh) h_R + integral from h_R to h_L of u(rho g (h_L - y)) dy,
+// u(dP) the superficial velocity whose Ergun drop t (mu/K u + 1.75/sqrt(150) rho/(sqrt(K) n^1.5)
+// u^2) is dP (thesis eqs. 2.21-2.22; the part above the lower level sees a drop that falls to
+// 0 at the upper level), and the levels follow d(dh)/dt = -4 Q / L (each half L/2 wide).
+// The test finds the factor c on Ergun's drop for which this model, started from the measured
+// dh at 0.3 s, reaches the measured dh at 2.5 s (dh measured by the pressure probes 0.1 m either
+// side of the screen, 0.03 m above the floor, as (p_L - p_R)/(rho g), averaged over +-0.1 s
+// against sloshing within each half). c is the screen's pressure drop in the simulation
+// relative to Ergun's. Reference: c = 1 within 10% (the tolerance).
+struct UtubeFit {
+  double c = 0.0;          // simulated pressure drop / Ergun's
+  double dh_start = 0.0;   // m, at 0.3 s
+  double dh_end = 0.0;     // m, at 2.5 s
+};
+
+UtubeFit fit_ergun_factor(const std::string& velocity) {
+  const auto r = run_case_in_memory("ergun_utube.toml", {"time.end=2.6", "output.snapshot_interval=0",
+                                                         "output.sample_interval=0.01", "screens.0.velocity=" + velocity});
+  EXPECT_EQ(r.leaked, 0u);
+  const double rho = 1000.0, g = 9.81, mu = 1.0e-3, length = 0.4, mean_depth = 0.12;
+  const double n = 0.2, K = kozeny_carman_permeability(n, 0.005), t_sc = 0.02;
+  auto level_difference = [&](double t0) {
+    double sum = 0.0;
+    int k = 0;
+    for (std::size_t i = 0; i < r["time"].size(); ++i)
+      if (std::abs(r["time"][i] - t0) <= 0.1 + 1e-9) {
+        sum += (r["p:left"][i] - r["p:right"][i]) / (rho * g);
+        ++k;
+      }
+    return sum / k;
+  };
+  auto flux = [&](double dh, double c) {
+    // u from c * Ergun(u) = dP: the positive root of c (a u + b u^2) = dP.
+    const double a = c * norm(ergun_pressure_gradient(mu, rho, K, n, {1.0, 0.0})) * t_sc;  // a + b at u = 1
+    const double b = c * t_sc * 1.75 / std::sqrt(150.0) * rho / (std::sqrt(K) * std::pow(n, 1.5));
+    const double a_lin = a - b;  // viscous part
+    auto u = [&](double dP) { return (-a_lin + std::sqrt(a_lin * a_lin + 4.0 * b * std::max(dP, 0.0))) / (2.0 * b); };
+    const double h_right = mean_depth - 0.5 * dh;
+    double q = u(rho * g * dh) * h_right;
+    const int slices = 20;
+    for (int k = 0; k < slices; ++k) q += u(rho * g * dh * (1.0 - (k + 0.5) / slices)) * dh / slices;
+    return q;
+  };
+  auto evolve = [&](double dh, double c) {
+    for (double t = 0.3; t < 2.5 - 1e-9; t += 1e-3) dh -= 4.0 / length * flux(dh, c) * 1e-3;
+    return dh;
+  };
+  UtubeFit fit{0.0, level_difference(0.3), level_difference(2.5)};
+  double lo = 0.2, hi = 5.0;  // more resistance (larger c): slower decay, larger dh at the end
+  for (int it = 0; it < 40; ++it) {
+    fit.c = 0.5 * (lo + hi);
+    (evolve(fit.dh_start, fit.c) < fit.dh_end ? lo : hi) = fit.c;
+  }
+  std::printf("  velocity = %s: dh %.4f m -> %.4f m over 0.3-2.5 s; pressure drop / Ergun's = %.3f\n", velocity.c_str(),
+              fit.dh_start, fit.dh_end, fit.c);
+  return fit;
+}
+
+// Both velocity estimates of the screen particles. "shepard" must meet Ergun within 10%. The
+// thesis's kernel sum (eq. 2.26) is truncated within 2 h_sc of the floor and of the free surface
+// (here 35 mm of a 80-160 mm column), so its drag falls short; its factor is reported, and only
+// checked to be below the Shepard one (the truncation can only lower the velocity estimate).
+TEST(Validation, ErgunScreenPressureDropInAFlowThroughIt) {
+  const UtubeFit shepard = fit_ergun_factor("shepard");
+  const UtubeFit thesis = fit_ergun_factor("thesis");
+  report("ergun_utube_pressure_drop_ratio_shepard", shepard.c);
+  report("ergun_utube_pressure_drop_ratio_thesis", thesis.c);
+  EXPECT_NEAR(shepard.c, 1.0, 0.10);
+  EXPECT_LT(thesis.c, shepard.c);
+  EXPECT_GT(shepard.dh_start, 0.06);  // the flow was driven (0.08 m at the start)
 }
 
 }  // namespace
