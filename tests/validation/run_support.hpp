@@ -2,9 +2,11 @@
 // Runs a case in memory and keeps its time series, for the validation tests.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sloshsph/io/case_reader.hpp"
@@ -23,11 +25,11 @@ struct RunResult {
   const std::vector<double>& operator[](const std::string& c) const { return series.at(c); }
 };
 
-// Reads cases/<name> with the overrides, runs it to time.end sampling every
+// Reads the case file at `path` (run_case_in_memory: cases/<name>) with the overrides, runs it to time.end sampling every
 // output.sample_interval, and returns the columns. `inspect` sees the final simulation.
 template <class Inspect>
-RunResult run_case_in_memory(const std::string& name, const std::vector<std::string>& overrides, Inspect&& inspect) {
-  const CaseSpec spec = resolve_case(read_case_file(case_path(name), overrides));
+RunResult run_file_in_memory(const std::string& path, const std::vector<std::string>& overrides, Inspect&& inspect) {
+  const CaseSpec spec = resolve_case(read_case_file(path, overrides));
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
   RunResult r;
@@ -49,6 +51,11 @@ RunResult run_case_in_memory(const std::string& name, const std::vector<std::str
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   inspect(sim);
   return r;
+}
+
+template <class Inspect>
+RunResult run_case_in_memory(const std::string& name, const std::vector<std::string>& overrides, Inspect&& inspect) {
+  return run_file_in_memory(case_path(name), overrides, std::forward<Inspect>(inspect));
 }
 
 inline RunResult run_case_in_memory(const std::string& name, const std::vector<std::string>& overrides) {
