@@ -1,0 +1,59 @@
+// Faltinsen et al. (2000) tank, Shao et al. (2012) 3.1 (issue: the classic sloshing validations
+// of both schemes): cases/faltinsen2000.toml (ISPH) and faltinsen2000_wcsph.toml, surge
+// A cos(2 pi t / T), A = 0.032 m, T = 1.5 s, depth 0.6 m, dp = 20 mm, run to 40 s.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "run_support.hpp"
+#include "sloshsph/analysis/spectrum.hpp"
+#include "sloshsph/analysis/steady_state.hpp"
+
+namespace sloshsph {
+namespace {
+
+using testing::report;
+
+struct GaugeResponse {
+  double period = 0.0;   // s, dominant period of the gauge over 10-40 s
+  double eta_max = 0.0;  // m, average of the last 10 cycles' crests
+};
+
+GaugeResponse respond(const std::string& case_name) {
+  const auto r = testing::run_case_in_memory(case_name, {"time.end=40", "output.snapshot_interval=0"});
+  EXPECT_EQ(r.leaked, 0u) << case_name;
+  std::printf("  %s: %zu steps in %.0f s\n", case_name.c_str(), r.steps, r.wall_seconds);
+  std::vector<double> t, eta;
+  for (std::size_t i = 0; i < r["time"].size(); ++i)
+    if (r["time"][i] >= 10.0) {
+      t.push_back(r["time"][i]);
+      eta.push_back(r["eta:left"][i]);
+    }
+  GaugeResponse g;
+  g.period = 1.0 / dominant_frequency_fft(eta, t[1] - t[0]);
+  g.eta_max = steady_state_amplitude(t, eta, 1.5, 10).avg_max;
+  return g;
+}
+
+// References (issue): once steady, the gauge's dominant period equals the excitation period T
+// within 2%; ISPH and WCSPH agree on the average maximum elevation within 15%. "Steady" here:
+// after 10 s (6.7 periods); the free sloshing at 1.668 s excited by the start decays with the
+// schemes' numerical damping (zeta about 1.5%, time constant about 18 s), so the 30 s window
+// still holds some of it.
+// Measured (docs/validation.md): fails. The ISPH run completes (40,000 steps, 588 s on 2 threads);
+// the WCSPH run (Shao's repulsive walls) goes non-finite at t = 32.1 s (step 246,275), a defect
+// not yet found.
+TEST(ValidationLong, FaltinsenTankBothSchemes) {
+  const GaugeResponse isph = respond("faltinsen2000.toml");
+  const GaugeResponse wcsph = respond("faltinsen2000_wcsph.toml");
+  report("faltinsen_period_isph_s", isph.period);
+  report("faltinsen_period_wcsph_s", wcsph.period);
+  report("faltinsen_eta_max_isph_m", isph.eta_max);
+  report("faltinsen_eta_max_wcsph_m", wcsph.eta_max);
+  EXPECT_NEAR(isph.period / 1.5, 1.0, 0.02);
+  EXPECT_NEAR(wcsph.period / 1.5, 1.0, 0.02);
+  EXPECT_NEAR(wcsph.eta_max / isph.eta_max, 1.0, 0.15);
+}
+
+}  // namespace
+}  // namespace sloshsph
