@@ -133,6 +133,27 @@ struct ScreenSpec {
   bool shepard_velocity = false;
 };
 
+// An elastic plate (flap, baffle, gate) in the tank: a geometrically exact beam
+// (structure/beam.hpp) coupled two-way with the fluid (run/plate_coupling.hpp, Dincer 2019).
+// [[plates]]. The centre line runs from `from` (the first end, usually the clamped one) to `to`.
+enum class PlateSupport { free, pinned, clamped };
+
+struct PlateSpec {
+  std::string name;
+  Vec2 from, to;                   // m, centre line in the tank frame
+  double standing_height = 0.0;    // m: given by `x` and `height`, standing on the bottom at from.x
+                                   // (from.y and `to` resolved by geometry/build_scene); 0 otherwise
+  double thickness = 0.0;          // m, t (in the plane)
+  double youngs_modulus = 0.0;     // Pa
+  double poisson_ratio = 0.3;      // -, G = E / (2 (1 + nu)) for the shear stiffness
+  double density = 0.0;            // kg/m^3
+  int elements = 40;               // beam elements along the centre line
+  PlateSupport from_support = PlateSupport::clamped;
+  PlateSupport to_support = PlateSupport::free;
+  double rayleigh_mass = 0.0;      // b0 [1/s] of C = b0 M + b1 K (Dincer eq. 15)
+  double rayleigh_stiffness = 0.0; // b1 [s]
+};
+
 struct TimeSpec {
   double end = 0.0;          // s
   double dt = 5.0e-4;        // s, fixed step (or the ceiling of an adaptive step)
@@ -273,6 +294,7 @@ struct CaseSpec {
   std::vector<PressureProbeSpec> pressure_probes;
   std::vector<FrontProbeSpec> fronts;
   std::vector<ScreenSpec> screens;
+  std::vector<PlateSpec> plates;
   std::optional<StructureSpec> structure;  // [structure]: the tank moves with an SDOF structure
   OutputSpec output;
   RunSpec run;

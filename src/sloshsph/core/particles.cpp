@@ -27,7 +27,9 @@ void compact_prefix(std::vector<T>& v, std::size_t n_prefix, const std::vector<s
 void require_consistent(const Particles& p) {
   const std::size_t n = p.size();
   if (p.velocity.size() != n || p.pressure.size() != n || p.pressure_back.size() != n ||
-      p.density.size() != n || p.normal.size() != n || p.id.size() != n || p.n_fluid > n)
+      p.density.size() != n || p.normal.size() != n || p.id.size() != n || p.n_fluid > n ||
+      p.wall_motion_velocity.size() != p.wall_motion_acceleration.size() ||
+      (p.has_moving_walls() && p.wall_motion_velocity.size() != n - p.n_fluid))
     throw std::logic_error("Particles: per-particle arrays differ in length (use Particles::resize)");
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Structure-of-arrays particle store. Fluid particles occupy [0, n_fluid),
-// wall (dummy) particles [n_fluid, size()). Walls never move in the tank frame.
+// wall (dummy) particles [n_fluid, size()). Tank walls never move in the tank frame; the walls
+// of an elastic plate (run/plate_coupling) move with it and carry their motion in wall_motion_*.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -19,6 +20,12 @@ struct Particles {
   std::vector<double> density;   // kg/m^3, kernel-summed (diagnostic for fluid)
   std::vector<Vec2> normal;      // inward unit wall normal (walls only; zero for fluid)
   std::vector<std::int32_t> id;  // stable identity across re-sorting
+  // Motion of the wall material in the tank frame, one entry per wall particle (index w - n_fluid),
+  // or both empty when every wall is fixed (the common case: nothing to read). Set by the driver
+  // for moving walls (elastic plates); the wall models use it for the image velocity and the
+  // wall pressure (physics/walls.hpp).
+  std::vector<Vec2> wall_motion_velocity;      // m/s
+  std::vector<Vec2> wall_motion_acceleration;  // m/s^2
   std::size_t n_fluid = 0;
   double mass = 0.0;             // kg per metre of width, the same for every particle
   double volume = 0.0;           // m^2, dp^2
@@ -26,6 +33,12 @@ struct Particles {
   std::size_t size() const { return position.size(); }
   std::size_t n_wall() const { return size() - n_fluid; }
   bool is_fluid(std::size_t i) const { return i < n_fluid; }
+  bool has_moving_walls() const { return !wall_motion_velocity.empty(); }
+  // Velocity and acceleration of wall particle w (index into the store, w >= n_fluid).
+  Vec2 wall_velocity(std::size_t w) const { return has_moving_walls() ? wall_motion_velocity[w - n_fluid] : Vec2{}; }
+  Vec2 wall_acceleration(std::size_t w) const {
+    return has_moving_walls() ? wall_motion_acceleration[w - n_fluid] : Vec2{};
+  }
 
   void resize(std::size_t n) {
     position.resize(n);

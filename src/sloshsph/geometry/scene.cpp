@@ -70,7 +70,17 @@ Scene build_scene(const CaseSpec& spec) {
     }
     scene.screens.push_back(sc);
   }
-  // No fluid inside the slats: drop fluid particles closer than 0.9 dp to a slat particle.
+  // Elastic plates: wall particles that the driver moves with the plate.
+  std::vector<std::size_t> plate_offsets;
+  for (std::size_t k = 0; k < spec.plates.size(); ++k) {
+    const std::string key = "plates." + std::to_string(k);
+    const std::string key_where = spec.where(key + (spec.plates[k].standing_height > 0.0 ? ".x" : ".from"));
+    PlateLayout layout = plate_layout(spec.plates[k], scene.dp, *tank, key_where, key);
+    plate_offsets.push_back(walls.size());
+    walls.insert(walls.end(), layout.walls.begin(), layout.walls.end());
+    scene.plates.push_back(std::move(layout));
+  }
+  // No fluid inside the slats and plates: drop fluid particles closer than 0.9 dp to one of their particles.
   if (walls.size() > tank_walls) {
     std::vector<Vec2> slats;
     for (std::size_t k = tank_walls; k < walls.size(); ++k) slats.push_back(walls[k].position);
@@ -108,6 +118,7 @@ Scene build_scene(const CaseSpec& spec) {
     p.id[i] = static_cast<std::int32_t>(i);
     p.density[i] = spec.fluid.density;
   }
+  for (std::size_t offset : plate_offsets) scene.plate_first.push_back(fluid.size() + offset);
   scene.initial_fluid_count = p.n_fluid;
   scene.initial_fluid_mass = p.mass * static_cast<double>(p.n_fluid);
   return scene;

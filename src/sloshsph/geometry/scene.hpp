@@ -6,6 +6,7 @@
 
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/particles.hpp"
+#include "sloshsph/geometry/plates.hpp"
 #include "sloshsph/geometry/tank.hpp"
 
 namespace sloshsph {
@@ -19,6 +20,11 @@ struct Scene {
   double initial_fluid_mass = 0.0;  // kg per metre of width
   std::size_t initial_fluid_count = 0;
   std::vector<ScreenSpec> screens;  // the case's screens, full-height ones resolved to from/to
+  // Elastic plates: their layouts and where their wall particles start in the particle store
+  // (plate k holds particles [plate_first[k], plate_first[k] + plates[k].walls.size())). They
+  // are the last wall particles, after the tank walls and the explicit slats.
+  std::vector<PlateLayout> plates;
+  std::vector<std::size_t> plate_first;
   std::vector<std::string> warnings;  // set-up remarks for the user (e.g. slats too fine for dp)
 };
 

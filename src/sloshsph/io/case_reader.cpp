@@ -301,6 +301,46 @@ void read_screens(TableReader& root, CaseSpec& spec) {
   }
 }
 
+// [[plates]]: elastic plates coupled with the fluid (run/plate_coupling.hpp).
+PlateSupport read_support(TableReader& r, const std::string& key, const std::string& fallback) {
+  const std::string v = r.choice(key, fallback, {"clamped", "pinned", "free"});
+  return v == "clamped" ? PlateSupport::clamped : v == "pinned" ? PlateSupport::pinned : PlateSupport::free;
+}
+
+void read_plates(TableReader& root, CaseSpec& spec) {
+  std::set<std::string> names;
+  for (TableReader& r : root.array_of_tables("plates")) {
+    PlateSpec pl;
+    pl.name = r.string("name");
+    check_name(r, "name", pl.name, names);
+    if (r.has("x")) {
+      if (r.has("from") || r.has("to"))
+        r.fail("x", "give either 'x' and 'height' (a plate standing on the bottom) or 'from' and 'to', not both");
+      pl.from = {r.number("x"), 0.0};
+      pl.standing_height = r.positive("height");
+    } else {
+      if (!r.has("from") || !r.has("to"))
+        r.fail("x", "a plate needs 'x' and 'height' (standing on the bottom) or 'from' and 'to' ([x, y] in m)");
+      pl.from = r.point("from");
+      pl.to = r.point("to");
+      if (norm(pl.to - pl.from) <= 0.0) r.fail("to", "the plate has zero length ('from' and 'to' coincide)");
+    }
+    pl.thickness = r.positive("thickness");
+    pl.youngs_modulus = r.positive("youngs_modulus");
+    pl.density = r.positive("density");
+    pl.poisson_ratio = r.in_range("poisson_ratio", pl.poisson_ratio, 0.0, 0.4999);
+    pl.elements = static_cast<int>(r.integer("elements", pl.elements, 1, 2000));
+    pl.from_support = read_support(r, "from_support", "clamped");
+    pl.to_support = read_support(r, "to_support", "free");
+    if (pl.from_support == PlateSupport::free && pl.to_support == PlateSupport::free)
+      r.fail("from_support", "a plate with two free ends floats away: support at least one end");
+    pl.rayleigh_mass = r.non_negative("rayleigh_mass", 0.0);
+    pl.rayleigh_stiffness = r.non_negative("rayleigh_stiffness", 0.0);
+    r.finish();
+    spec.plates.push_back(pl);
+  }
+}
+
 // [structure.load]: the external force on the structure. Keys of one load type are read only
 // for that type, so a key of another type is an unknown key.
 StructureLoadSpec read_structure_load(TableReader& r) {
@@ -568,6 +608,11 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
     fail("output.sample_interval", "is longer than the simulation (time.end)");
   check_counts(s, fail);
   check_structure_consistency(s);
+  if (!s.plates.empty() && s.scheme.type == "wcsph" && s.scheme.wcsph.walls == WallTreatment::repulsive)
+    fail("plates", "elastic plates need the Adami wall model (scheme.walls = \"adami\"): Shao's repulsive "
+                   "walls do not carry the motion of a moving wall");
+  if (!s.plates.empty() && s.structure)
+    fail("plates", "elastic plates and [structure] cannot be combined yet");
 }
 
 CaseSpec read_root(toml::table& root, const std::string& source, const std::vector<std::string>& overrides) {
@@ -589,6 +634,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "excitation", false, [&](TableReader& t) { spec.excitation = read_excitation(t); });
   section(r, "probes", false, [&](TableReader& t) { read_probes(t, spec); });
   read_screens(r, spec);
+  read_plates(r, spec);
   section(r, "structure", false, [&](TableReader& t) { spec.structure = read_structure(t); });
   section(r, "output", false, [&](TableReader& t) { spec.output = read_output(t); });
   section(r, "run", false, [&](TableReader& t) { spec.run = read_run(t); });
@@ -889,6 +935,31 @@ std::string resolved_case_toml(const CaseSpec& s) {
     screens.push_back(t);
   }
   if (!screens.empty()) root.insert("screens", screens);
+  toml::array plates;
+  auto support_name = [](PlateSupport v) {
+    return v == PlateSupport::clamped ? "clamped" : v == PlateSupport::pinned ? "pinned" : "free";
+  };
+  for (const PlateSpec& pl : s.plates) {
+    toml::table t{{"name", pl.name}};
+    if (pl.standing_height > 0.0) {
+      t.insert("x", pl.from.x);
+      t.insert("height", pl.standing_height);
+    } else {
+      t.insert("from", toml::array{pl.from.x, pl.from.y});
+      t.insert("to", toml::array{pl.to.x, pl.to.y});
+    }
+    t.insert("thickness", pl.thickness);
+    t.insert("youngs_modulus", pl.youngs_modulus);
+    t.insert("density", pl.density);
+    t.insert("poisson_ratio", pl.poisson_ratio);
+    t.insert("elements", pl.elements);
+    t.insert("from_support", support_name(pl.from_support));
+    t.insert("to_support", support_name(pl.to_support));
+    t.insert("rayleigh_mass", pl.rayleigh_mass);
+    t.insert("rayleigh_stiffness", pl.rayleigh_stiffness);
+    plates.push_back(t);
+  }
+  if (!plates.empty()) root.insert("plates", plates);
   if (s.structure) root.insert("structure", structure_table(*s.structure));
   root.insert("output", toml::table{{"sample_interval", s.output.sample_interval},
                                     {"snapshot_interval", s.output.snapshot_interval},

@@ -1,5 +1,6 @@
 #pragma once
-// Fixed dummy wall particles (Adami, Hu & Adams 2012), as thesis 2.4.3.1 and 3.3.2.2.
+// Dummy wall particles (Adami, Hu & Adams 2012), as thesis 2.4.3.1 and 3.3.2.2: fixed tank walls,
+// and moving ones (elastic plates) through Particles::wall_velocity / wall_acceleration.
 #include <algorithm>
 #include <vector>
 
@@ -10,7 +11,7 @@
 namespace sloshsph {
 
 // Free slip: each wall particle takes the Shepard-averaged fluid velocity u~ around it with
-// its normal component reflected, u_w = u~ - 2 (u~ . n) n. In viscous and turbulent terms
+// its normal component reflected, u_w = u~ - 2 ((u~ - v_w) . n) n (v_w = 0 for a fixed wall). In viscous and turbulent terms
 // the fluid then feels no tangential drag and twice its normal velocity (no penetration).
 // Uses the local wall normal, so it holds on sloped and curved walls (thesis 3.3.2.2).
 template <class K>
@@ -27,13 +28,17 @@ void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourLi
     }
     const Vec2 u = wsum > 0.0 ? sum / wsum : Vec2{};
     const Vec2 n = p.normal[w];
-    velocity[w] = u - 2.0 * dot(u, n) * n;
+    // A moving wall (velocity v_w) reflects the normal velocity relative to itself: the mean of
+    // fluid and image normal velocities is then the wall's, u_w.n = 2 v_w.n - u.n (Adami et al.
+    // 2012, eq. 23, applied to the normal component only: free slip).
+    velocity[w] = u - 2.0 * dot(u - p.wall_velocity(w), n) * n;
   }
 }
 
 // Thesis eq. 2.19 (Adami et al. 2012, eq. 27) with the frame acceleration:
 //   p_w = (sum_f p_f W_wf + (g - a) . sum_f rho_f (r_w - r_f) W_wf) / sum_f W_wf,
-// where g - a is the tank-frame body force at the wall particle (frame.at(r_w, 0)). `position` gives
+// where g - a is the tank-frame body force at the wall particle (frame.at(r_w, 0)) less the
+// wall's own acceleration in the tank frame (moving walls: elastic plates). `position` gives
 // the fluid positions to use (r* inside a step). A wall particle with no fluid around it gets
 // p = 0, and the result is clipped at 0: above the free surface the extrapolation goes negative,
 // and a negative wall pressure would pull surface particles up along the wall (the fluid
@@ -58,7 +63,7 @@ void adami_wall_pressure(const K& k, Particles& p, const NeighbourList& nl, cons
       rsum[side] += W * rwf;
       wsum[side] += W;
     }
-    const Vec2 g = frame.at(rw, Vec2{});
+    const Vec2 g = frame.at(rw, Vec2{}) - p.wall_acceleration(w);  // Adami eq. 27: (g - a_w)
     auto extrapolate = [&](int s) { return wsum[s] > 0.0 ? std::max(0.0, (psum[s] + rho0 * dot(g, rsum[s])) / wsum[s]) : 0.0; };
     p.pressure[w] = extrapolate(0);
     p.pressure_back[w] = extrapolate(1);

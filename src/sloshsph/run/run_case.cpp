@@ -373,6 +373,28 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     if (auto a = structure_admittance(ss, *spec.structure))
       write_file_atomic((fs::path(dir) / "admittance.csv").string(), admittance_csv(*a));
   }
+  if (!sim.plates().empty()) {
+    nlohmann::json plates = nlohmann::json::array();
+    for (const PlateCoupling& pl : sim.plates()) {
+      const Vec2 tip = pl.tip_displacement();
+      nlohmann::json j = {{"name", pl.spec().name},
+                          {"max_abs_tip_dx_m", pl.max_abs_tip_dx()},
+                          {"final_tip_dx_m", tip.x},
+                          {"final_tip_dy_m", tip.y},
+                          {"length_m", pl.beam().length()},
+                          {"elements", pl.beam().element_count()},
+                          {"wall_particles", pl.count()},
+                          {"bending_stiffness_N_m", pl.beam().section().bending},
+                          {"mass_per_length_kg_per_m2", pl.spec().density * pl.spec().thickness},
+                          {"crossings", pl.crossings()}};
+      if (pl.crossings() > 0) {
+        j["first_crossing_time_s"] = pl.first_crossing_time();
+        j["first_crossing_id"] = pl.first_crossing_id();
+      }
+      plates.push_back(j);
+    }
+    s["plates"] = plates;
+  }
   if (!failure.empty()) s["failure"] = failure;
   if (!sim.scene().warnings.empty()) s["warnings"] = sim.scene().warnings;
   if (sim.leaked() > 0) {

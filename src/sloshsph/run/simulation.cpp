@@ -50,6 +50,7 @@ Simulation::Simulation(const CaseSpec& spec)
   linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
+  start_plates();
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
   settle();
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
@@ -60,6 +61,32 @@ Simulation::Simulation(const CaseSpec& spec)
     structure_->start(base_.at(0.0).acceleration.x);
   }
   build_columns();
+}
+
+// The plates' wall particles become moving walls (held still while the fluid settles: the
+// plates are released at t = 0 with the settled fluid around them).
+void Simulation::start_plates() {
+  if (scene_.plates.empty()) return;
+  Particles& p = scene_.particles;
+  p.wall_motion_velocity.assign(p.n_wall(), Vec2{});
+  p.wall_motion_acceleration.assign(p.n_wall(), Vec2{});
+  for (std::size_t k = 0; k < scene_.plates.size(); ++k) {
+    plates_.emplace_back(scene_.plates[k], scene_.plate_first[k] - p.n_fluid);
+    plates_.back().place(p);
+  }
+  acc_plate_force_.assign(plates_.size(), Vec2{});
+}
+
+// After each fluid step (staggered, run/plate_coupling.hpp): the fluid's face pressures load the
+// plates, which move to t + dt and carry their wall particles with them.
+void Simulation::advance_plates(double dt, const FrameForce& frame) {
+  Particles& p = scene_.particles;
+  const FrameForce before = frame_force(spec_.fluid.gravity, tank_motion());
+  for (std::size_t k = 0; k < plates_.size(); ++k) {
+    acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
+    plates_[k].advance(p, dt, frame);
+    plates_[k].check_crossings(p, scheme_.neighbours(), time_ + dt);
+  }
 }
 
 BaseMotion Simulation::tank_motion() const {
@@ -93,6 +120,18 @@ void Simulation::build_columns() {
                                    {"max_speed", "m/s"},
                                    {"dt", "s"},
                                    {"ppe_iterations", "1"}});
+  for (const auto& pl : plates_) {
+    const std::string& n = pl.spec().name;
+    columns_.insert(columns_.end(), {{"plate_dx:" + n, "m"},
+                                     {"plate_dy:" + n, "m"},
+                                     {"plate_mid_dx:" + n, "m"},
+                                     {"plate_mid_dy:" + n, "m"},
+                                     {"F_plate_x:" + n, "N/m"},
+                                     {"F_plate_y:" + n, "N/m"},
+                                     {"E_plate:" + n, "J/m"},
+                                     {"plate_inside:" + n, "1"},
+                                     {"plate_crossings:" + n, "1"}});
+  }
   if (structure_)
     columns_.insert(columns_.end(), {{"x_s", "m"},
                                      {"v_s", "m/s"},
@@ -179,6 +218,7 @@ void Simulation::step() {
   }
 
   BaseMotion after = base_.at(time_ + dt);
+  if (!plates_.empty()) advance_plates(dt, frame_force(spec_.fluid.gravity, after));
   if (structure_) {
     after.displacement.x += structure_->displacement();
     after.velocity.x += structure_->velocity();
@@ -321,6 +361,15 @@ std::vector<double> Simulation::sample() {
   v.insert(v.end(), {f_w.x, f_w.x - mass * a_mean, f_w.y, work_on_fluid_, mass, e_kin, e_pot,
                      static_cast<double>(leaks_.size()), max_speed_, last_dt_,
                      static_cast<double>(scheme_.diagnostics().solver_iterations)});
+  for (std::size_t k = 0; k < plates_.size(); ++k) {
+    PlateCoupling& pl = plates_[k];
+    const Vec2 tip = pl.tip_displacement(), mid = pl.displacement_at(0.5);
+    const Vec2 f = acc_dt_ > 0.0 ? acc_plate_force_[k] / acc_dt_ : pl.last_force();
+    v.insert(v.end(), {tip.x, tip.y, mid.x, mid.y, f.x, f.y, pl.strain_energy() + pl.kinetic_energy(),
+                       static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())),
+                       static_cast<double>(pl.crossings())});
+    acc_plate_force_[k] = {};
+  }
   if (structure_) append_structure_values(v, e_kin, momentum_x, e_pot);
   acc_dt_ = 0.0;
   acc_wall_force_ = {};
@@ -351,6 +400,8 @@ void save_particles(StateWriter& w, const Particles& p) {
   w.array("particles.density", p.density);
   w.array("particles.normal", p.normal);
   w.array("particles.id", p.id);
+  w.array("particles.wall_motion_velocity", p.wall_motion_velocity);
+  w.array("particles.wall_motion_acceleration", p.wall_motion_acceleration);
   w.value("particles.n_fluid", static_cast<std::uint64_t>(p.n_fluid));
 }
 
@@ -362,6 +413,8 @@ void load_particles(StateReader& r, Particles& p) {
   p.density = r.array<double>("particles.density");
   p.normal = r.array<Vec2>("particles.normal");
   p.id = r.array<std::int32_t>("particles.id");
+  p.wall_motion_velocity = r.array<Vec2>("particles.wall_motion_velocity");
+  p.wall_motion_acceleration = r.array<Vec2>("particles.wall_motion_acceleration");
   p.n_fluid = static_cast<std::size_t>(r.value<std::uint64_t>("particles.n_fluid"));
 }
 
@@ -384,6 +437,9 @@ void Simulation::save_state(StateWriter& w) const {
   w.value("sim.acc_tld_force", acc_tld_force_);
   w.value("sim.has_structure", static_cast<std::uint8_t>(structure_.has_value()));
   if (structure_) structure_->save_state(w);
+  w.value("sim.plates", static_cast<std::uint64_t>(plates_.size()));
+  for (std::size_t k = 0; k < plates_.size(); ++k) plates_[k].save_state(w, "plate." + std::to_string(k));
+  w.array("sim.acc_plate_force", acc_plate_force_);
 }
 
 void Simulation::load_state(StateReader& r) {
@@ -407,6 +463,10 @@ void Simulation::load_state(StateReader& r) {
   if (has_structure != structure_.has_value())
     throw InputError(spec_.source, "structure", "the checkpoint and the case disagree on [structure]");
   if (structure_) structure_->load_state(r);
+  if (r.value<std::uint64_t>("sim.plates") != plates_.size())
+    throw InputError(spec_.source, "plates", "the checkpoint and the case disagree on the number of [[plates]]");
+  for (std::size_t k = 0; k < plates_.size(); ++k) plates_[k].load_state(r, "plate." + std::to_string(k));
+  acc_plate_force_ = r.array<Vec2>("sim.acc_plate_force");
 }
 
 }  // namespace sloshsph

@@ -12,6 +12,7 @@
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/excitation.hpp"
 #include "sloshsph/physics/porous.hpp"
+#include "sloshsph/run/plate_coupling.hpp"
 #include "sloshsph/run/structure_coupling.hpp"
 #include "sloshsph/schemes/scheme.hpp"
 
@@ -68,6 +69,8 @@ class Simulation {
   BaseMotion tank_motion() const;
   // [structure]: the structure carrying the tank (nullptr without one).
   const StructureCoupling* structure() const { return structure_ ? &*structure_ : nullptr; }
+  // [[plates]]: the elastic plates, in case order.
+  const std::vector<PlateCoupling>& plates() const { return plates_; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
   std::size_t leaked() const { return leaks_.size(); }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
@@ -88,6 +91,8 @@ class Simulation {
   void settle();
   void check_state();
   void remove_leaked();
+  void start_plates();
+  void advance_plates(double dt, const FrameForce& frame);
   void build_columns();
   void append_structure_values(std::vector<double>& values, double kinetic_energy, double momentum_x,
                                double potential_energy);
@@ -120,6 +125,10 @@ class Simulation {
   // [structure] (thesis 4.2.3): the SDOF carrying the tank, the sloshing force of the last
   // fluid step (N/m, fed to the structure in the next one) and the interval sum of dt x F_TLD.
   std::optional<StructureCoupling> structure_;
+  // [[plates]] (Dincer 2019): elastic plates moved by the fluid, and the interval sums of dt x the
+  // fluid force on each.
+  std::vector<PlateCoupling> plates_;
+  std::vector<Vec2> acc_plate_force_;
   double sloshing_force_ = 0.0;
   double acc_tld_force_ = 0.0;
 };

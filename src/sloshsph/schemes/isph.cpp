@@ -232,7 +232,8 @@ void predict_position(const Particles& p, double dt, IsphData& d) {
 //    would act as a suction (measured: unstable within 0.4 s at rest, docs/physics.md).
 //  * In div(u*) a wall particle carries u*_w = u_w + dt (g - a): its free-slip image velocity
 //    (the normal component of the nearby fluid reflected, which resists penetration) plus
-//    the body-force increment the fluid received. The wall pressure of eq. 2.19 already
+//    the body-force increment the fluid received (less the wall's own acceleration for a moving
+//    wall). The wall pressure of eq. 2.19 already
 //    imposes dp/dn = rho (g - a).n; with u*_w = 0 the source would impose it a second time.
 template <class K>
 void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, const StepInput& in,
@@ -249,7 +250,8 @@ void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, c
       const double w = k.w(r);
       wsum += w;
       if (!p.is_fluid(j)) wall_sum += w;
-      const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j] : p.velocity[j] + dt * in.frame.at(p.position[j], Vec2{});
+      const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j]
+                                    : p.velocity[j] + dt * (in.frame.at(p.position[j], Vec2{}) - p.wall_acceleration(j));
       div += V * k.gradient_factor(r) * dot(uj - ui, rij);
     }
     const double rho_star = m * wsum;
@@ -384,7 +386,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
       } else {
         if (dot(rij, p.normal[i]) > 0.0) continue;  // wall rows: the front fluid only (eq. 2.19)
         coef = k.w(std::sqrt(r2));
-        rhs += dot(in.frame.at(ri, Vec2{}), rij) * rho0_ * coef;
+        rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), rij) * rho0_ * coef;  // moving walls: g - a_w
       }
       diag += coef;
       if (unknown[j] >= 0) triplets.emplace_back(row, unknown[j], -coef);

@@ -38,7 +38,8 @@ bool NeighbourList::stale(const std::vector<Vec2>& position, std::size_t n_fluid
   const double limit2 = 0.25 * skin_ * skin_;
   bool moved = false;
 #pragma omp parallel for reduction(|| : moved) schedule(static)
-  for (std::size_t i = 0; i < n_fluid; ++i) moved = moved || norm2(position[i] - position_at_build_[i]) > limit2;
+  // Every particle: the walls of an elastic plate move too (fixed walls never trip the test).
+  for (std::size_t i = 0; i < position.size(); ++i) moved = moved || norm2(position[i] - position_at_build_[i]) > limit2;
   return moved;
 }
 

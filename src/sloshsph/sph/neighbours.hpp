@@ -57,7 +57,7 @@ class NeighbourList {
   NeighbourList(double support, double skin) : support_(support), skin_(skin) {}
 
   // True when the list must be rebuilt: never built, particle count changed,
-  // or a fluid particle moved more than skin/2 since the last build.
+  // or a particle (fluid, or the wall of a moving plate) moved more than skin/2 since the last build.
   bool stale(const std::vector<Vec2>& position, std::size_t n_fluid) const;
 
   // Rows for all particles: fluid rows hold fluid and wall neighbours, wall rows

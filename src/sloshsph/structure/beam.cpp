@@ -714,6 +714,48 @@ void Beam::add_force(const BeamMaterialPoint& p, Vec2 force, BeamLoads& loads) c
   loads.nodal_moments[first + 1] += p.xi * moment;
 }
 
+double Beam::rotation(const BeamMaterialPoint& p) const {
+  const int base = kDofsPerNode * p.element;
+  return (1.0 - p.xi) * state_.q[base + 2] + p.xi * state_.q[base + 5];
+}
+
+namespace {
+std::vector<double> to_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+Eigen::VectorXd from_vector(const std::vector<double>& v, Eigen::Index size, const std::string& name) {
+  if (static_cast<Eigen::Index>(v.size()) != size)
+    throw InputError("checkpoint", name, "holds " + std::to_string(v.size()) + " values, the beam has " +
+                                             std::to_string(size) + " degrees of freedom");
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), size);
+}
+}  // namespace
+
+void Beam::save_state(StateWriter& w, const std::string& prefix) const {
+  w.array(prefix + ".q", to_vector(state_.q));
+  w.array(prefix + ".v", to_vector(state_.v));
+  w.array(prefix + ".a", to_vector(state_.a));
+  w.value(prefix + ".acceleration_ready", static_cast<std::uint8_t>(state_.acceleration_ready));
+  w.array(prefix + ".previous_force_balance", to_vector(state_.previous_force_balance));
+  w.array(prefix + ".previous_external", to_vector(state_.previous_external));
+  w.array(prefix + ".previous_damping", to_vector(state_.previous_damping));
+  w.value(prefix + ".time", state_.time);
+  w.value(prefix + ".external_work", state_.external_work);
+  w.value(prefix + ".dissipated", state_.dissipated);
+}
+
+void Beam::load_state(StateReader& r, const std::string& prefix) {
+  const Eigen::Index n = state_.q.size();
+  state_.q = from_vector(r.array<double>(prefix + ".q"), n, prefix + ".q");
+  state_.v = from_vector(r.array<double>(prefix + ".v"), n, prefix + ".v");
+  state_.a = from_vector(r.array<double>(prefix + ".a"), n, prefix + ".a");
+  state_.acceleration_ready = r.value<std::uint8_t>(prefix + ".acceleration_ready") != 0;
+  state_.previous_force_balance = from_vector(r.array<double>(prefix + ".previous_force_balance"), n, prefix);
+  state_.previous_external = from_vector(r.array<double>(prefix + ".previous_external"), n, prefix);
+  state_.previous_damping = from_vector(r.array<double>(prefix + ".previous_damping"), n, prefix);
+  state_.time = r.value<double>(prefix + ".time");
+  state_.external_work = r.value<double>(prefix + ".external_work");
+  state_.dissipated = r.value<double>(prefix + ".dissipated");
+}
+
 BeamModes Beam::modes(int count) const {
   Assembly assembly;
   const BeamLoads none;

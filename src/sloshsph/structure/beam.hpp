@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <vector>
 
+#include "sloshsph/core/state_io.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/structure/banded_lu.hpp"
 #include "sloshsph/structure/beam_element.hpp"
@@ -141,6 +142,13 @@ class Beam {
   Vec2 position(const BeamMaterialPoint& point) const;
   Vec2 velocity(const BeamMaterialPoint& point) const;
   void add_force(const BeamMaterialPoint& point, Vec2 force, BeamLoads& loads) const;
+  // Rotation of the section at a material point since the undeformed state [rad] (counter-clockwise).
+  double rotation(const BeamMaterialPoint& point) const;
+
+  // Checkpoints: the motion state (displacements, velocities, accelerations, energy sums). A
+  // Beam built from the same spec and loaded continues bitwise as the saved one would have.
+  void save_state(StateWriter& w, const std::string& prefix) const;
+  void load_state(StateReader& r, const std::string& prefix);
 
   // Small vibrations about the current configuration (with its stresses): K_T phi = omega^2 M phi
   // on the unconstrained DOFs, solved densely (fine up to a few hundred elements). `count` lowest

@@ -1,0 +1,223 @@
+#include "sloshsph/run/plate_coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sloshsph/core/errors.hpp"
+
+namespace sloshsph {
+namespace {
+
+BeamSupport beam_support(PlateSupport s) {
+  return s == PlateSupport::clamped ? BeamSupport::kClamped
+         : s == PlateSupport::pinned ? BeamSupport::kPinned
+                                     : BeamSupport::kFree;
+}
+
+Vec2 rotated(Vec2 v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+}  // namespace
+
+BeamSpec plate_beam_spec(const PlateSpec& spec) {
+  BeamSpec b;
+  b.start = spec.from;
+  b.end = spec.to;
+  b.elements = spec.elements;
+  b.thickness = spec.thickness;
+  b.width = 1.0;  // loads, masses and energies per metre of out-of-plane width, as the fluid's
+  b.youngs_modulus = spec.youngs_modulus;
+  b.poisson_ratio = spec.poisson_ratio;
+  b.density = spec.density;
+  b.rayleigh_mass = spec.rayleigh_mass;
+  b.rayleigh_stiffness = spec.rayleigh_stiffness;
+  b.start_support = beam_support(spec.from_support);
+  b.end_support = beam_support(spec.to_support);
+  b.gravity = {};  // the tank-frame body force (gravity included) comes with each step's loads
+  return b;
+}
+
+PlateCoupling::PlateCoupling(const PlateLayout& layout, std::size_t first_wall)
+    : layout_(layout), first_wall_(first_wall), beam_(plate_beam_spec(layout.spec)) {
+  const std::size_t n = layout_.walls.size();
+  points_.reserve(n);
+  for (const WallSample& w : layout_.walls) points_.push_back(beam_.material_point(w.position));
+  force_.assign(n, Vec2{});
+  velocity_.assign(n, Vec2{});
+  acceleration_.assign(n, Vec2{});
+}
+
+void PlateCoupling::place(Particles& p) const {
+  const std::size_t base = p.n_fluid + first_wall_;
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const std::size_t w = base + k;
+    p.position[w] = beam_.position(points_[k]);
+    p.normal[w] = rotated(layout_.walls[k].normal, beam_.rotation(points_[k]));
+    p.wall_motion_velocity[first_wall_ + k] = velocity_[k];
+    p.wall_motion_acceleration[first_wall_ + k] = acceleration_[k];
+  }
+}
+
+// The face pressure is the wall pressure carried from the particle to its face along the normal,
+// p_face = p_w + rho0 (g - a_w) . n d (the hydrostatic part of Adami's extrapolation, eq. 27),
+// kept >= 0 as the wall pressure is.
+Vec2 PlateCoupling::fluid_force(const Particles& p, const FrameForce& frame, double rho0) {
+  const std::size_t base = p.n_fluid + first_wall_;
+  Vec2 total;
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    force_[k] = {};
+    const double ds = layout_.face_length[k];
+    if (ds <= 0.0) continue;
+    const std::size_t w = base + k;
+    const Vec2 n = p.normal[w];
+    const double d = layout_.face_distance[k];
+    const Vec2 g = frame.at(p.position[w], Vec2{}) - acceleration_[k];
+    // A face with no fluid on it (wall pressure 0: nothing to extrapolate from) carries nothing.
+    auto face_pressure = [&](double wall, Vec2 normal) {
+      return wall > 0.0 ? std::max(0.0, wall + rho0 * dot(g, normal) * d) : 0.0;
+    };
+    const Vec2 f = (-face_pressure(p.pressure[w], n) * ds) * n;
+    force_[k] = f;
+    total += f;
+  }
+  last_force_ = total;
+  return total;
+}
+
+void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
+  BeamLoads loads = beam_.zero_loads();
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (force_[k].x != 0.0 || force_[k].y != 0.0) beam_.add_force(points_[k], force_[k], loads);
+  // The body force of the tank frame (gravity, the base's acceleration, pitch terms) at the
+  // middle of the undeformed plate: uniform over the plate.
+  loads.body_acceleration = frame.at(0.5 * (layout_.spec.from + layout_.spec.to), Vec2{});
+  beam_.step(dt, loads);
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const Vec2 v = beam_.velocity(points_[k]);
+    acceleration_[k] = (v - velocity_[k]) / dt;
+    velocity_[k] = v;
+  }
+  max_abs_tip_dx_ = std::max(max_abs_tip_dx_, std::abs(tip_displacement().x));
+  place(p);
+}
+
+Vec2 PlateCoupling::displacement_at(double fraction) const {
+  const std::vector<Vec2> u = beam_.node_displacements();
+  const double x = std::clamp(fraction, 0.0, 1.0) * static_cast<double>(u.size() - 1);
+  const std::size_t k = std::min(static_cast<std::size_t>(x), u.size() - 2);
+  const double xi = x - static_cast<double>(k);
+  return (1.0 - xi) * u[k] + xi * u[k + 1];
+}
+
+PlateCoupling::CentreLineOffset PlateCoupling::locate(Vec2 r, const std::vector<Vec2>& nodes) const {
+  CentreLineOffset best;
+  double best_d2 = std::numeric_limits<double>::infinity(), s0 = 0.0;
+  const std::size_t last = nodes.size() - 2;
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const Vec2 a = nodes[k], e = nodes[k + 1] - a;
+    const double len2 = norm2(e), len = std::sqrt(len2);
+    const double t_raw = dot(r - a, e) / len2;
+    const double t = std::clamp(t_raw, 0.0, 1.0);
+    const Vec2 foot = a + t * e;
+    const double d2 = norm2(r - foot);
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best.offset = cross(e, r - a) / len;  // + to the left of the centre line: the `across` side
+      best.s = s0 + t * len;
+      best.in_span = !((k == 0 && t_raw <= 0.0) || (k == last && t_raw >= 1.0));
+    }
+    s0 += len;
+  }
+  return best;
+}
+
+template <class F>
+void PlateCoupling::for_each_near_fluid(const Particles& p, const NeighbourList& nl, F&& f) {
+  if (stamp_.size() < p.size()) stamp_.resize(p.size(), 0);
+  ++calls_;
+  const std::size_t base = p.n_fluid + first_wall_;
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    for (auto it = nl.begin(base + k); it != nl.end(base + k); ++it) {
+      const std::uint32_t i = *it;
+      if (i >= p.n_fluid || stamp_[i] == calls_) continue;
+      stamp_[i] = calls_;
+      f(i);
+    }
+}
+
+void PlateCoupling::check_crossings(const Particles& p, const NeighbourList& nl, double time) {
+  const std::vector<Vec2> nodes = beam_.node_positions();
+  const double band = nl.search_radius();
+  std::vector<std::pair<std::int32_t, std::int8_t>> now;
+  for_each_near_fluid(p, nl, [&](std::size_t i) {
+    const CentreLineOffset c = locate(p.position[i], nodes);
+    if (!c.in_span || std::abs(c.offset) > band) return;
+    now.emplace_back(p.id[i], c.offset >= 0.0 ? 1 : -1);
+  });
+  std::int32_t max_id = 0;
+  for (const auto& [id, s] : now) max_id = std::max(max_id, id);
+  if (side_.size() <= static_cast<std::size_t>(max_id)) side_.resize(static_cast<std::size_t>(max_id) + 1, 0);
+  for (std::size_t k = 0; k < now.size(); ++k) {
+    const auto [id, s] = now[k];
+    const std::int8_t before = side_[static_cast<std::size_t>(id)];
+    if (before != 0 && before != s) {
+      if (crossings_ == 0) {
+        first_crossing_time_ = time;
+        first_crossing_id_ = id;
+      }
+      ++crossings_;
+    }
+  }
+  for (std::int32_t id : near_ids_) side_[static_cast<std::size_t>(id)] = 0;  // left the band: forgotten
+  near_ids_.clear();
+  for (const auto& [id, s] : now) {
+    side_[static_cast<std::size_t>(id)] = s;
+    near_ids_.push_back(id);
+  }
+}
+
+std::size_t PlateCoupling::fluid_inside(const Particles& p, const NeighbourList& nl) {
+  const std::vector<Vec2> nodes = beam_.node_positions();
+  const double half = 0.5 * layout_.spec.thickness;
+  std::size_t inside = 0;
+  for_each_near_fluid(p, nl, [&](std::size_t i) {
+    const CentreLineOffset c = locate(p.position[i], nodes);
+    if (c.in_span && std::abs(c.offset) < half) ++inside;
+  });
+  return inside;
+}
+
+void PlateCoupling::save_state(StateWriter& w, const std::string& prefix) const {
+  beam_.save_state(w, prefix + ".beam");
+  w.array(prefix + ".force", force_);
+  w.array(prefix + ".velocity", velocity_);
+  w.array(prefix + ".acceleration", acceleration_);
+  w.value(prefix + ".last_force", last_force_);
+  w.value(prefix + ".max_abs_tip_dx", max_abs_tip_dx_);
+  w.array(prefix + ".side", side_);
+  w.array(prefix + ".near_ids", near_ids_);
+  w.value(prefix + ".crossings", static_cast<std::uint64_t>(crossings_));
+  w.value(prefix + ".first_crossing_time", first_crossing_time_);
+  w.value(prefix + ".first_crossing_id", first_crossing_id_);
+}
+
+void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
+  beam_.load_state(r, prefix + ".beam");
+  force_ = r.array<Vec2>(prefix + ".force");
+  velocity_ = r.array<Vec2>(prefix + ".velocity");
+  acceleration_ = r.array<Vec2>(prefix + ".acceleration");
+  if (force_.size() != points_.size() || velocity_.size() != points_.size() || acceleration_.size() != points_.size())
+    throw InputError("checkpoint", prefix, "the plate in the checkpoint has another particle count than the case's");
+  last_force_ = r.value<Vec2>(prefix + ".last_force");
+  max_abs_tip_dx_ = r.value<double>(prefix + ".max_abs_tip_dx");
+  side_ = r.array<std::int8_t>(prefix + ".side");
+  near_ids_ = r.array<std::int32_t>(prefix + ".near_ids");
+  crossings_ = static_cast<std::size_t>(r.value<std::uint64_t>(prefix + ".crossings"));
+  first_crossing_time_ = r.value<double>(prefix + ".first_crossing_time");
+  first_crossing_id_ = r.value<std::int32_t>(prefix + ".first_crossing_id");
+}
+
+}  // namespace sloshsph

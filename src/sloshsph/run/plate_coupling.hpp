@@ -1,0 +1,107 @@
+#pragma once
+// Two-way coupling of an elastic plate ([[plates]]) with the fluid (Dincer 2019, sec. 2.3; the
+// choice of method is argued in docs/physics.md, "Elastic plates").
+//
+// The plate is a geometrically exact beam (structure/beam.hpp) in the tank frame. Its wall
+// particles (geometry/plates.hpp) are material points of the beam: each step they take the
+// beam's position, section rotation (for their normal), velocity and acceleration, and the
+// fluid sees them as moving Adami walls (physics/walls.hpp). The fluid acts back through the
+// pressure on the plate's faces: each face particle w carries the load
+//   f_w = -p_face n_w ds_w,   p_face = p_w + rho0 (g - a_w) . n_w d_w
+// (the wall pressure extrapolated from the particle to its face, d_w the distance, ds_w the face
+// length it stands for, per metre of width), added to the beam's nodes work-consistently. The walls
+// are free-slip, so the fluid exerts no shear on them. Staggered in time: the fluid step sees the
+// plate at t, the plate then advances to t + dt under the loads of that step. Stable with the
+// weakly compressible scheme; with ISPH a plate much lighter than the fluid it moves is not
+// (the added-mass instability of staggered couplings, measured in docs/validation.md).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sloshsph/core/particles.hpp"
+#include "sloshsph/core/state_io.hpp"
+#include "sloshsph/geometry/plates.hpp"
+#include "sloshsph/physics/frame.hpp"
+#include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/structure/beam.hpp"
+
+namespace sloshsph {
+
+// The beam of a plate (SI, per metre of out-of-plane width; gravity enters as the frame force).
+BeamSpec plate_beam_spec(const PlateSpec& spec);
+
+class PlateCoupling {
+ public:
+  // `first_wall` is the index of the plate's first particle among the wall particles (its store
+  // index less n_fluid: it stays valid when leaked fluid particles are removed).
+  PlateCoupling(const PlateLayout& layout, std::size_t first_wall);
+
+  const PlateSpec& spec() const { return layout_.spec; }
+  const Beam& beam() const { return beam_; }
+  std::size_t first_wall() const { return first_wall_; }
+  std::size_t count() const { return points_.size(); }
+
+  // Writes the plate's configuration into its wall particles: position, normal, and the wall
+  // motion (velocity, acceleration) of the store (which must be sized for the walls).
+  void place(Particles& p) const;
+
+  // The fluid's force on each face particle from the wall pressures now in the store (N/m),
+  // and their sum (the force of the fluid on the plate).
+  Vec2 fluid_force(const Particles& p, const FrameForce& frame, double rho0);
+
+  // One plate step of dt under the fluid loads of fluid_force() and the frame's body force
+  // (at the plate's root), then place(). Throws RunFailure if the beam's Newton iteration fails.
+  void advance(Particles& p, double dt, const FrameForce& frame);
+
+  // Fluid particles that crossed the plate this step (came within 2 h of it on one side and are now
+  // on the other, within its span), from the neighbour rows of the plate's particles; the count
+  // since the start and the first one are kept.
+  void check_crossings(const Particles& p, const NeighbourList& nl, double time);
+  std::size_t crossings() const { return crossings_; }
+  double first_crossing_time() const { return first_crossing_time_; }
+  std::int32_t first_crossing_id() const { return first_crossing_id_; }
+  // Fluid particles now inside the deformed plate (closer than t/2 to its centre line, within its span).
+  std::size_t fluid_inside(const Particles& p, const NeighbourList& nl);
+
+  Vec2 last_force() const { return last_force_; }                 // N/m, fluid on plate, last step
+  Vec2 displacement_at(double fraction) const;                    // m, centre line at s = fraction L
+  Vec2 tip_displacement() const { return displacement_at(1.0); }  // the `to` end
+  double strain_energy() const { return beam_.strain_energy(); }
+  double kinetic_energy() const { return beam_.kinetic_energy(); }
+  double max_abs_tip_dx() const { return max_abs_tip_dx_; }
+
+  void save_state(StateWriter& w, const std::string& prefix) const;
+  void load_state(StateReader& r, const std::string& prefix);
+
+ private:
+  // Position of a fluid point relative to the deformed centre line: signed offset across it
+  // (+ towards the side of the initial `across` normal) and the arc length of its foot.
+  struct CentreLineOffset {
+    double offset = 0.0;
+    double s = 0.0;
+    bool in_span = false;  // the foot lies on the centre line, not at (or beyond) an end
+  };
+  CentreLineOffset locate(Vec2 r, const std::vector<Vec2>& nodes) const;
+  // Calls f(i) once for each fluid particle listed by the neighbour rows of the plate's particles.
+  template <class F> void for_each_near_fluid(const Particles& p, const NeighbourList& nl, F&& f);
+
+  PlateLayout layout_;
+  std::size_t first_wall_;
+  Beam beam_;
+  std::vector<BeamMaterialPoint> points_;
+  std::vector<Vec2> force_;         // per particle, N/m
+  std::vector<Vec2> velocity_;      // per particle, m/s (tank frame)
+  std::vector<Vec2> acceleration_;  // per particle, m/s^2
+  Vec2 last_force_;
+  double max_abs_tip_dx_ = 0.0;
+  // Crossing watch: the side (+1/-1, 0 unknown) of each fluid particle id near the plate.
+  std::vector<std::int8_t> side_;
+  std::vector<std::int32_t> near_ids_;
+  std::vector<std::uint32_t> stamp_;  // per store index: last call that listed it (candidate dedup)
+  std::uint32_t calls_ = 0;
+  std::size_t crossings_ = 0;
+  double first_crossing_time_ = -1.0;
+  std::int32_t first_crossing_id_ = -1;
+};
+
+}  // namespace sloshsph
