@@ -29,19 +29,18 @@ double max_of(const RunResult& r, const std::string& column) {
 }
 
 // cases/hydrostatic_plate.toml: a 1 m water column on a 2 m plate clamped at both ends (WCSPH,
-// dp = 20 mm, 1.5 s). Reference: the clamped-clamped beam under the uniform load of the water and
+// dp = 20 mm, 1 s of damped settling of fluid and plate together, then 0.5 s). Reference: the clamped-clamped beam under the uniform load of the water and
 // of the plate's own weight, w = q L^4 / (384 E I) + q L^2 / (8 k G A) (Timoshenko's shear part,
 // 1.1% here), q = rho g H + rho_s g t. Tolerance 5% (the bar) on the mean mid-span
-// deflection over 1.0-1.5 s (the column still breathes at about 0.6 s period after its release at
-// t = 0: about 3 periods are averaged); the load on the plate within 2% of the weight carried.
+// deflection over 0-0.5 s; the load on the plate within 2% of the weight carried.
 TEST(Validation, HydrostaticPlateDeflectsAsTheClampedBeam) {
   const RunResult r = run_case_in_memory("hydrostatic_plate.toml", {});
   const double rho = 1000.0, g = 9.81, H = 1.0, L = 2.0, t = 0.06, E = 1.0e10, nu = 0.3, rho_s = 2700.0;
   const double EI = E * t * t * t / 12.0, kGA = 5.0 / 6.0 * E / (2.0 * (1.0 + nu)) * t;
   const double q_water = rho * g * H, q = q_water + rho_s * g * t;
   const double w_ref = q * std::pow(L, 4) / (384.0 * EI) + q * L * L / (8.0 * kGA);
-  const double w = -mean_over(r, "plate_mid_dy:floor", 1.0, 1.5);
-  const double load = -mean_over(r, "F_plate_y:floor", 1.0, 1.5);
+  const double w = -mean_over(r, "plate_mid_dy:floor", 0.0, 0.5);
+  const double load = -mean_over(r, "F_plate_y:floor", 0.01, 0.5);
   report("hydrostatic_plate_midspan_m", w);
   report("hydrostatic_plate_reference_m", w_ref);
   report("hydrostatic_plate_ratio", w / w_ref);
@@ -56,11 +55,13 @@ TEST(Validation, HydrostaticPlateDeflectsAsTheClampedBeam) {
   EXPECT_EQ(r.leaked, 0u);
 }
 
-// cases/elastic_plate_pulse.toml (Dincer 2019, 3.1) at dp = 2 mm for its first second (the pulse
-// acts from 0.1 to 0.6 s): the plate must bend visibly (the paper: about 4 cm at the tip), no fluid
-// particle may pass through it or sit inside it, none may leave the tank.
+// cases/elastic_plate_pulse.toml (Dincer 2019, 3.1) at its dp = 1.5 mm (13,292 fluid particles)
+// for 0.7 s (the pulse acts from 0.1 to 0.6 s; the tip's first swing peaks near 0.5 s and the plate
+// swings back through the vertical near 0.62 s, where a coarser dp let fluid through): the plate
+// must bend visibly (the paper: about 4 cm at the tip), no fluid particle may pass through it or
+// sit inside it, none may leave the tank.
 TEST(Validation, ElasticPlateUnderAPulseKeepsTheFluidOnItsSides) {
-  const RunResult r = run_case_in_memory("elastic_plate_pulse.toml", {"particles.dp=0.002", "time.end=1.0"});
+  const RunResult r = run_case_in_memory("elastic_plate_pulse.toml", {"time.end=0.7"});
   const std::vector<double>& tip = r["plate_dx:plate"];
   double peak = 0.0;
   for (double x : tip) peak = std::max(peak, std::abs(x));

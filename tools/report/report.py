@@ -268,6 +268,13 @@ def histories_section(rep):
     if screens:
         parts.append("<h3>Screen forces</h3>")
         parts.append(history_figure(rep, screens, "screen_forces", "Forces on the screens (per metre)"))
+    plates = [n for n in run.names if n.split(":")[0] in ("plate_dx", "plate_dy", "plate_mid_dx", "plate_mid_dy")]
+    plate_forces = [n for n in run.names if n.split(":")[0] in ("F_plate_x", "F_plate_y")]
+    if plates:
+        parts.append("<h3 id='plates'>Elastic plates</h3>")
+        parts.append(history_figure(rep, plates, "plates", "Elastic plates: displacement of the tip (the `to` end) "
+                                    "and of the middle", filtered=False, normalise=False))
+        parts.append(history_figure(rep, plate_forces, "plate_forces", "Force of the fluid on the plates (per metre)"))
     base = [n for n in BASE if n in cols]
     if base:
         parts.append("<h3 id='base'>Base motion</h3>")
@@ -279,7 +286,8 @@ def histories_section(rep):
         parts.append("<h3 id='diagnostics'>Diagnostics</h3>")
         parts.append(history_figure(rep, diag, "diagnostics", "Run diagnostics", filtered=False,
                                     normalise=False, panel_height=1.5))
-    known = set(["time"] + BASE + FORCES + ENERGY + DIAGNOSTICS + STRUCTURE + gauges + probes + screens)
+    known = set(["time"] + BASE + FORCES + ENERGY + DIAGNOSTICS + STRUCTURE + gauges + probes + screens + plates
+                + plate_forces)
     other = [n for n in run.names if n not in known]
     if other:
         parts.append("<h3>Other columns</h3>")

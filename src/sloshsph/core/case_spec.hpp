@@ -152,6 +152,7 @@ struct PlateSpec {
   PlateSupport to_support = PlateSupport::free;
   double rayleigh_mass = 0.0;      // b0 [1/s] of C = b0 M + b1 K (Dincer eq. 15)
   double rayleigh_stiffness = 0.0; // b1 [s]
+  double hht_alpha = -0.3;         // HHT-alpha time integration of the plate, in [-1/3, 0]
 };
 
 struct TimeSpec {

@@ -74,8 +74,8 @@ Scene build_scene(const CaseSpec& spec) {
   std::vector<std::size_t> plate_offsets;
   for (std::size_t k = 0; k < spec.plates.size(); ++k) {
     const std::string key = "plates." + std::to_string(k);
-    const std::string key_where = spec.where(key + (spec.plates[k].standing_height > 0.0 ? ".x" : ".from"));
-    PlateLayout layout = plate_layout(spec.plates[k], scene.dp, *tank, key_where, key);
+    const KeyLocation where = [&spec](const std::string& k) { return spec.where(k); };
+    PlateLayout layout = plate_layout(spec.plates[k], scene.dp, 2.0 * scene.h, *tank, where, key);
     plate_offsets.push_back(walls.size());
     walls.insert(walls.end(), layout.walls.begin(), layout.walls.end());
     scene.plates.push_back(std::move(layout));

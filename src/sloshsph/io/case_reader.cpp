@@ -336,6 +336,7 @@ void read_plates(TableReader& root, CaseSpec& spec) {
       r.fail("from_support", "a plate with two free ends floats away: support at least one end");
     pl.rayleigh_mass = r.non_negative("rayleigh_mass", 0.0);
     pl.rayleigh_stiffness = r.non_negative("rayleigh_stiffness", 0.0);
+    pl.hht_alpha = r.in_range("hht_alpha", pl.hht_alpha, -1.0 / 3.0, 0.0);
     r.finish();
     spec.plates.push_back(pl);
   }
@@ -957,6 +958,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
     t.insert("to_support", support_name(pl.to_support));
     t.insert("rayleigh_mass", pl.rayleigh_mass);
     t.insert("rayleigh_stiffness", pl.rayleigh_stiffness);
+    t.insert("hht_alpha", pl.hht_alpha);
     plates.push_back(t);
   }
   if (!plates.empty()) root.insert("plates", plates);

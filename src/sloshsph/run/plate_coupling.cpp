@@ -36,6 +36,12 @@ BeamSpec plate_beam_spec(const PlateSpec& spec) {
   b.rayleigh_stiffness = spec.rayleigh_stiffness;
   b.start_support = beam_support(spec.from_support);
   b.end_support = beam_support(spec.to_support);
+  // HHT-alpha rather than the energy-conserving rule: the particle loads are noisy and excite the
+  // plate's highest modes (omega dt >> 1 at the fluid step), which the conserving rule keeps for
+  // ever and feeds back as wall accelerations (measured: the hydrostatic plate diverged at 1.3 s).
+  // alpha < 0 damps them and leaves the resolved modes second-order accurate.
+  b.integrator = BeamIntegrator::kHHT;
+  b.hht_alpha = spec.hht_alpha;
   b.gravity = {};  // the tank-frame body force (gravity included) comes with each step's loads
   return b;
 }
@@ -48,6 +54,7 @@ PlateCoupling::PlateCoupling(const PlateLayout& layout, std::size_t first_wall)
   force_.assign(n, Vec2{});
   velocity_.assign(n, Vec2{});
   acceleration_.assign(n, Vec2{});
+  contact_force_.assign(static_cast<std::size_t>(beam_.node_count()), Vec2{});
 }
 
 void PlateCoupling::place(Particles& p) const {
@@ -61,27 +68,27 @@ void PlateCoupling::place(Particles& p) const {
   }
 }
 
-// The face pressure is the wall pressure carried from the particle to its face along the normal,
-// p_face = p_w + rho0 (g - a_w) . n d (the hydrostatic part of Adami's extrapolation, eq. 27),
-// kept >= 0 as the wall pressure is.
+// The face pressure is the wall pressure carried from the particle to its face along the face's
+// normal, p_face = p_w + rho0 (g - a_w) . n d (the hydrostatic part of Adami's extrapolation,
+// eq. 27), kept >= 0 as the wall pressure is; a face with no fluid on it (wall pressure 0: nothing
+// to extrapolate from) carries nothing.
 Vec2 PlateCoupling::fluid_force(const Particles& p, const FrameForce& frame, double rho0) {
   const std::size_t base = p.n_fluid + first_wall_;
   Vec2 total;
   for (std::size_t k = 0; k < points_.size(); ++k) {
     force_[k] = {};
-    const double ds = layout_.face_length[k];
-    if (ds <= 0.0) continue;
     const std::size_t w = base + k;
-    const Vec2 n = p.normal[w];
-    const double d = layout_.face_distance[k];
+    const double p_w = p.pressure[w];
+    if (p_w <= 0.0) continue;
+    const double angle = beam_.rotation(points_[k]);
     const Vec2 g = frame.at(p.position[w], Vec2{}) - acceleration_[k];
-    // A face with no fluid on it (wall pressure 0: nothing to extrapolate from) carries nothing.
-    auto face_pressure = [&](double wall, Vec2 normal) {
-      return wall > 0.0 ? std::max(0.0, wall + rho0 * dot(g, normal) * d) : 0.0;
-    };
-    const Vec2 f = (-face_pressure(p.pressure[w], n) * ds) * n;
-    force_[k] = f;
-    total += f;
+    for (const PlateFace* face : {&layout_.side_face[k], &layout_.end_face[k]}) {
+      if (face->length <= 0.0) continue;
+      const Vec2 n = rotated(face->normal, angle);
+      const double p_face = std::max(0.0, p_w + rho0 * dot(g, n) * face->distance);
+      force_[k] += (-p_face * face->length) * n;
+    }
+    total += force_[k];
   }
   last_force_ = total;
   return total;
@@ -91,6 +98,11 @@ void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
   BeamLoads loads = beam_.zero_loads();
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (force_[k].x != 0.0 || force_[k].y != 0.0) beam_.add_force(points_[k], force_[k], loads);
+  if (contacts_ > 0) {  // the contact impulses of the last step, as forces
+    if (loads.nodal_forces.empty()) loads.nodal_forces.assign(contact_force_.size(), Vec2{});
+    for (std::size_t n = 0; n < contact_force_.size(); ++n) loads.nodal_forces[n] += contact_force_[n];
+  }
+  std::fill(contact_force_.begin(), contact_force_.end(), Vec2{});
   // The body force of the tank frame (gravity, the base's acceleration, pitch terms) at the
   // middle of the undeformed plate: uniform over the plate.
   loads.body_acceleration = frame.at(0.5 * (layout_.spec.from + layout_.spec.to), Vec2{});
@@ -102,6 +114,23 @@ void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
   }
   max_abs_tip_dx_ = std::max(max_abs_tip_dx_, std::abs(tip_displacement().x));
   place(p);
+}
+
+void PlateCoupling::damp(Particles& p, double factor) {
+  beam_.scale_velocities(factor);
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    velocity_[k] = beam_.velocity(points_[k]);
+    acceleration_[k] = {};
+  }
+  place(p);
+}
+
+void PlateCoupling::restart() {
+  max_abs_tip_dx_ = std::abs(tip_displacement().x);
+  crossings_ = 0;
+  contacts_ = 0;
+  first_crossing_time_ = -1.0;
+  first_crossing_id_ = -1;
 }
 
 Vec2 PlateCoupling::displacement_at(double fraction) const {
@@ -128,6 +157,8 @@ PlateCoupling::CentreLineOffset PlateCoupling::locate(Vec2 r, const std::vector<
       best.offset = cross(e, r - a) / len;  // + to the left of the centre line: the `across` side
       best.s = s0 + t * len;
       best.in_span = !((k == 0 && t_raw <= 0.0) || (k == last && t_raw >= 1.0));
+      best.segment = k;
+      best.t = t;
     }
     s0 += len;
   }
@@ -148,34 +179,74 @@ void PlateCoupling::for_each_near_fluid(const Particles& p, const NeighbourList&
     }
 }
 
+std::size_t PlateCoupling::enforce_contact(Particles& p, const NeighbourList& nl, double dp, double dt) {
+  const std::vector<Vec2> nodes = beam_.node_positions();
+  const std::vector<Vec2> node_velocity = beam_.node_velocities();
+  const double contact = 0.5 * layout_.spec.thickness + 0.25 * dp;
+  std::size_t moved = 0;
+  for_each_near_fluid(p, nl, [&](std::size_t i) {
+    const CentreLineOffset c = locate(p.position[i], nodes);
+    if (!c.in_span || std::abs(c.offset) >= contact) return;
+    const auto id = static_cast<std::size_t>(p.id[i]);
+    const int known = id < side_.size() ? side_[id] : 0;
+    const double side = known != 0 ? known : (c.offset >= 0.0 ? 1.0 : -1.0);
+    const std::size_t k = c.segment;
+    const Vec2 a = nodes[k], e = normalized(nodes[k + 1] - a);
+    const Vec2 n = side * perp(e);  // out of the plate, towards the particle's side
+    // Onto the contact surface, plus 1% of the depth: two particles with one foot must not land on
+    // one point (a zero pair distance is 0/0 in the viscous terms). Moving them further (mirrored
+    // about the surface) pushed them into the compressed fluid there: non-finite at 0.71 s.
+    const double depth = contact - side * c.offset;  // > 0
+    p.position[i] = a + (c.t * norm(nodes[k + 1] - a)) * e + (contact + 0.01 * depth) * n;
+    const Vec2 v_plate = (1.0 - c.t) * node_velocity[k] + c.t * node_velocity[k + 1];
+    const double approach = dot(p.velocity[i] - v_plate, n);
+    if (approach < 0.0) {
+      p.velocity[i] -= approach * n;
+      const Vec2 impulse_on_plate = (p.mass * approach) * n;  // the fluid's lost momentum into the plate
+      contact_force_[k] += ((1.0 - c.t) / dt) * impulse_on_plate;
+      contact_force_[k + 1] += (c.t / dt) * impulse_on_plate;
+    }
+    ++moved;
+  });
+  contacts_ += moved;
+  return moved;
+}
+
 void PlateCoupling::check_crossings(const Particles& p, const NeighbourList& nl, double time) {
   const std::vector<Vec2> nodes = beam_.node_positions();
   const double band = nl.search_radius();
-  std::vector<std::pair<std::int32_t, std::int8_t>> now;
+  struct Near {
+    std::int32_t id;
+    std::int8_t side;
+    Vec2 position;
+    double s;
+  };
+  std::vector<Near> now;
   for_each_near_fluid(p, nl, [&](std::size_t i) {
     const CentreLineOffset c = locate(p.position[i], nodes);
     if (!c.in_span || std::abs(c.offset) > band) return;
-    now.emplace_back(p.id[i], c.offset >= 0.0 ? 1 : -1);
+    now.push_back({p.id[i], static_cast<std::int8_t>(c.offset >= 0.0 ? 1 : -1), p.position[i], c.s});
   });
   std::int32_t max_id = 0;
-  for (const auto& [id, s] : now) max_id = std::max(max_id, id);
+  for (const Near& n : now) max_id = std::max(max_id, n.id);
   if (side_.size() <= static_cast<std::size_t>(max_id)) side_.resize(static_cast<std::size_t>(max_id) + 1, 0);
-  for (std::size_t k = 0; k < now.size(); ++k) {
-    const auto [id, s] = now[k];
-    const std::int8_t before = side_[static_cast<std::size_t>(id)];
-    if (before != 0 && before != s) {
+  for (const Near& n : now) {
+    const std::int8_t before = side_[static_cast<std::size_t>(n.id)];
+    if (before != 0 && before != n.side) {
       if (crossings_ == 0) {
         first_crossing_time_ = time;
-        first_crossing_id_ = id;
+        first_crossing_id_ = n.id;
+        first_crossing_position_ = n.position;
+        first_crossing_s_ = n.s;
       }
       ++crossings_;
     }
   }
   for (std::int32_t id : near_ids_) side_[static_cast<std::size_t>(id)] = 0;  // left the band: forgotten
   near_ids_.clear();
-  for (const auto& [id, s] : now) {
-    side_[static_cast<std::size_t>(id)] = s;
-    near_ids_.push_back(id);
+  for (const Near& n : now) {
+    side_[static_cast<std::size_t>(n.id)] = n.side;
+    near_ids_.push_back(n.id);
   }
 }
 
@@ -200,8 +271,12 @@ void PlateCoupling::save_state(StateWriter& w, const std::string& prefix) const 
   w.array(prefix + ".side", side_);
   w.array(prefix + ".near_ids", near_ids_);
   w.value(prefix + ".crossings", static_cast<std::uint64_t>(crossings_));
+  w.value(prefix + ".contacts", static_cast<std::uint64_t>(contacts_));
+  w.array(prefix + ".contact_force", contact_force_);
   w.value(prefix + ".first_crossing_time", first_crossing_time_);
   w.value(prefix + ".first_crossing_id", first_crossing_id_);
+  w.value(prefix + ".first_crossing_position", first_crossing_position_);
+  w.value(prefix + ".first_crossing_s", first_crossing_s_);
 }
 
 void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
@@ -216,8 +291,12 @@ void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
   side_ = r.array<std::int8_t>(prefix + ".side");
   near_ids_ = r.array<std::int32_t>(prefix + ".near_ids");
   crossings_ = static_cast<std::size_t>(r.value<std::uint64_t>(prefix + ".crossings"));
+  contacts_ = static_cast<std::size_t>(r.value<std::uint64_t>(prefix + ".contacts"));
+  contact_force_ = r.array<Vec2>(prefix + ".contact_force");
   first_crossing_time_ = r.value<double>(prefix + ".first_crossing_time");
   first_crossing_id_ = r.value<std::int32_t>(prefix + ".first_crossing_id");
+  first_crossing_position_ = r.value<Vec2>(prefix + ".first_crossing_position");
+  first_crossing_s_ = r.value<double>(prefix + ".first_crossing_s");
 }
 
 }  // namespace sloshsph

@@ -11,9 +11,10 @@
 // (the wall pressure extrapolated from the particle to its face, d_w the distance, ds_w the face
 // length it stands for, per metre of width), added to the beam's nodes work-consistently. The walls
 // are free-slip, so the fluid exerts no shear on them. Staggered in time: the fluid step sees the
-// plate at t, the plate then advances to t + dt under the loads of that step. Stable with the
-// weakly compressible scheme; with ISPH a plate much lighter than the fluid it moves is not
-// (the added-mass instability of staggered couplings, measured in docs/validation.md).
+// plate at t, the plate then advances to t + dt under the loads of that step (HHT-alpha, which
+// damps the plate's unresolved high modes). Stable with the weakly compressible scheme; with ISPH
+// a plate much lighter than the fluid it moves is noisy (the added-mass effect of staggered
+// couplings, measured in docs/physics.md).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -53,6 +54,19 @@ class PlateCoupling {
   // (at the plate's root), then place(). Throws RunFailure if the beam's Newton iteration fails.
   void advance(Particles& p, double dt, const FrameForce& frame);
 
+  // Damped settling before t = 0 (Simulation::settle): scales the plate's velocities by `factor`
+  // and moves its particles accordingly. restart() then zeroes the counters kept from t = 0.
+  void damp(Particles& p, double factor);
+  void restart();
+
+  // Contact (Dincer 2019, sec. 2.3: the fluid may not invade the structure): a fluid particle that
+  // came closer to the deformed centre line than t/2 + dp/4, within the span, is put back on that
+  // distance on the side it was last seen on, and its velocity into the plate (relative to the
+  // plate) is removed, the tangential part kept (slip). The momentum taken from it acts on the
+  // plate in its next step. Returns the number of particles put back this step.
+  std::size_t enforce_contact(Particles& p, const NeighbourList& nl, double dp, double dt);
+  std::size_t contacts() const { return contacts_; }  // since t = 0
+
   // Fluid particles that crossed the plate this step (came within 2 h of it on one side and are now
   // on the other, within its span), from the neighbour rows of the plate's particles; the count
   // since the start and the first one are kept.
@@ -60,6 +74,8 @@ class PlateCoupling {
   std::size_t crossings() const { return crossings_; }
   double first_crossing_time() const { return first_crossing_time_; }
   std::int32_t first_crossing_id() const { return first_crossing_id_; }
+  Vec2 first_crossing_position() const { return first_crossing_position_; }
+  double first_crossing_arc_length() const { return first_crossing_s_; }  // m from the `from` end
   // Fluid particles now inside the deformed plate (closer than t/2 to its centre line, within its span).
   std::size_t fluid_inside(const Particles& p, const NeighbourList& nl);
 
@@ -80,6 +96,8 @@ class PlateCoupling {
     double offset = 0.0;
     double s = 0.0;
     bool in_span = false;  // the foot lies on the centre line, not at (or beyond) an end
+    std::size_t segment = 0;  // element of the foot, and its position along it in [0, 1]
+    double t = 0.0;
   };
   CentreLineOffset locate(Vec2 r, const std::vector<Vec2>& nodes) const;
   // Calls f(i) once for each fluid particle listed by the neighbour rows of the plate's particles.
@@ -100,8 +118,12 @@ class PlateCoupling {
   std::vector<std::uint32_t> stamp_;  // per store index: last call that listed it (candidate dedup)
   std::uint32_t calls_ = 0;
   std::size_t crossings_ = 0;
+  std::size_t contacts_ = 0;
+  std::vector<Vec2> contact_force_;  // per beam node, N/m: for the next step
   double first_crossing_time_ = -1.0;
   std::int32_t first_crossing_id_ = -1;
+  Vec2 first_crossing_position_;
+  double first_crossing_s_ = 0.0;
 };
 
 }  // namespace sloshsph

@@ -386,10 +386,14 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
                           {"wall_particles", pl.count()},
                           {"bending_stiffness_N_m", pl.beam().section().bending},
                           {"mass_per_length_kg_per_m2", pl.spec().density * pl.spec().thickness},
-                          {"crossings", pl.crossings()}};
+                          {"crossings", pl.crossings()},
+                          {"contacts", pl.contacts()}};
       if (pl.crossings() > 0) {
         j["first_crossing_time_s"] = pl.first_crossing_time();
         j["first_crossing_id"] = pl.first_crossing_id();
+        j["first_crossing_x"] = pl.first_crossing_position().x;
+        j["first_crossing_y"] = pl.first_crossing_position().y;
+        j["first_crossing_arc_length_m"] = pl.first_crossing_arc_length();
       }
       plates.push_back(j);
     }

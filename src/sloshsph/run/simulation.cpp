@@ -63,8 +63,8 @@ Simulation::Simulation(const CaseSpec& spec)
   build_columns();
 }
 
-// The plates' wall particles become moving walls (held still while the fluid settles: the
-// plates are released at t = 0 with the settled fluid around them).
+// The plates' wall particles become moving walls. They settle with the fluid (time.settle): a
+// plate under a standing load starts at t = 0 deflected, at rest.
 void Simulation::start_plates() {
   if (scene_.plates.empty()) return;
   Particles& p = scene_.particles;
@@ -85,6 +85,7 @@ void Simulation::advance_plates(double dt, const FrameForce& frame) {
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
     plates_[k].advance(p, dt, frame);
+    plates_[k].enforce_contact(p, scheme_.neighbours(), spec_.particles.dp, dt);
     plates_[k].check_crossings(p, scheme_.neighbours(), time_ + dt);
   }
 }
@@ -130,6 +131,7 @@ void Simulation::build_columns() {
                                      {"F_plate_y:" + n, "N/m"},
                                      {"E_plate:" + n, "J/m"},
                                      {"plate_inside:" + n, "1"},
+                                     {"plate_contacts:" + n, "1"},
                                      {"plate_crossings:" + n, "1"}});
   }
   if (structure_)
@@ -161,8 +163,16 @@ void Simulation::settle() {
     scheme_.step(p, in);
     const double factor = std::exp(-in.dt / tau);
     for (std::size_t i = 0; i < p.n_fluid; ++i) p.velocity[i] = factor * p.velocity[i];
+    for (PlateCoupling& plate : plates_) {  // the plates settle with the fluid, damped alike
+      plate.fluid_force(p, in.frame, spec_.fluid.density);
+      plate.advance(p, in.dt, in.frame);
+      plate.enforce_contact(p, scheme_.neighbours(), spec_.particles.dp, in.dt);
+      plate.check_crossings(p, scheme_.neighbours(), -1.0);
+      plate.damp(p, factor);
+    }
     t += in.dt;
   }
+  for (PlateCoupling& plate : plates_) plate.restart();
   max_speed_ = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) max_speed_ = std::max(max_speed_, norm(p.velocity[i]));
 }
@@ -367,6 +377,7 @@ std::vector<double> Simulation::sample() {
     const Vec2 f = acc_dt_ > 0.0 ? acc_plate_force_[k] / acc_dt_ : pl.last_force();
     v.insert(v.end(), {tip.x, tip.y, mid.x, mid.y, f.x, f.y, pl.strain_energy() + pl.kinetic_energy(),
                        static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())),
+                       static_cast<double>(pl.contacts()),
                        static_cast<double>(pl.crossings())});
     acc_plate_force_[k] = {};
   }

@@ -714,6 +714,11 @@ void Beam::add_force(const BeamMaterialPoint& p, Vec2 force, BeamLoads& loads) c
   loads.nodal_moments[first + 1] += p.xi * moment;
 }
 
+void Beam::scale_velocities(double factor) {
+  state_.v *= factor;
+  state_.acceleration_ready = false;
+}
+
 double Beam::rotation(const BeamMaterialPoint& p) const {
   const int base = kDofsPerNode * p.element;
   return (1.0 - p.xi) * state_.q[base + 2] + p.xi * state_.q[base + 5];

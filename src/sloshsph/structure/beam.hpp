@@ -142,6 +142,10 @@ class Beam {
   Vec2 position(const BeamMaterialPoint& point) const;
   Vec2 velocity(const BeamMaterialPoint& point) const;
   void add_force(const BeamMaterialPoint& point, Vec2 force, BeamLoads& loads) const;
+  // Multiplies all velocities by `factor` (damped settling of a coupled run); the acceleration is
+  // then recomputed from the equation of motion at the next step.
+  void scale_velocities(double factor);
+
   // Rotation of the section at a material point since the undeformed state [rad] (counter-clockwise).
   double rotation(const BeamMaterialPoint& point) const;
 

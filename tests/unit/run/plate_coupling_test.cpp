@@ -9,6 +9,10 @@
 namespace sloshsph {
 namespace {
 
+KeyLocation at(const std::string& where) {
+  return [where](const std::string&) { return where; };
+}
+
 TankGeometry box(double length, double height) {
   TankSpec s;
   s.shape = "rectangle";
@@ -65,7 +69,7 @@ double settle_midspan(PlateCoupling& plate, Particles& p, double p0) {
 }
 
 TEST(PlateCoupling, FacePressureIsThePressureIntegral) {
-  const PlateLayout l = plate_layout(floor_plate(), 0.02, box(2.0, 1.6), "test", "plates.0");
+  const PlateLayout l = plate_layout(floor_plate(), 0.02, 2.66 * 0.02, box(2.0, 1.6), at("test"), "plates.0");
   PlateCoupling plate(l, 0);
   Particles p = plate_particles(l, 9810.0);
   const Vec2 f = plate.fluid_force(p, FrameForce{}, 1000.0);
@@ -82,7 +86,7 @@ TEST(PlateCoupling, FacePressureIsThePressureIntegral) {
 TEST(PlateCoupling, UniformFaceLoadGivesTheClampedBeamDeflection) {
   {
     const PlateSpec spec = floor_plate();
-    const PlateLayout l = plate_layout(spec, 0.02, box(2.0, 1.6), "test", "plates.0");
+    const PlateLayout l = plate_layout(spec, 0.02, 2.66 * 0.02, box(2.0, 1.6), at("test"), "plates.0");
     PlateCoupling plate(l, 0);
     Particles p = plate_particles(l, 9810.0);
     const double w = settle_midspan(plate, p, 9810.0);
@@ -97,7 +101,7 @@ TEST(PlateCoupling, UniformFaceLoadGivesTheClampedBeamDeflection) {
 }
 
 TEST(PlateCoupling, CheckpointRoundTripIsBitwise) {
-  const PlateLayout l = plate_layout(floor_plate(), 0.02, box(2.0, 1.6), "test", "plates.0");
+  const PlateLayout l = plate_layout(floor_plate(), 0.02, 2.66 * 0.02, box(2.0, 1.6), at("test"), "plates.0");
   PlateCoupling a(l, 0), b(l, 0);
   Particles pa = plate_particles(l, 5000.0), pb = pa;
   for (int s = 0; s < 20; ++s) {
@@ -118,6 +122,58 @@ TEST(PlateCoupling, CheckpointRoundTripIsBitwise) {
   EXPECT_EQ(a.tip_displacement().x, b.tip_displacement().x);
   EXPECT_EQ(a.displacement_at(0.5).y, b.displacement_at(0.5).y);
   for (std::size_t k = 0; k < pa.size(); ++k) EXPECT_EQ(pa.position[k].y, pb.position[k].y);
+}
+
+}  // namespace
+}  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+// A fluid particle driven into a standing plate is put back on its side with its velocity into
+// the plate removed, its tangential velocity kept (Dincer 2019, 2.3).
+TEST(PlateCoupling, ContactPutsAnInvadingParticleBackWithSlip) {
+  PlateSpec spec;
+  spec.name = "p";
+  spec.from = {0.15, 0.0};
+  spec.standing_height = 0.08;
+  spec.thickness = 0.003;
+  spec.youngs_modulus = 1e7;
+  spec.density = 1100.0;
+  const double dp = 0.0015;
+  TankSpec ts;
+  ts.shape = "rectangle";
+  ts.length = 0.3;
+  ts.height = 0.2;
+  const PlateLayout l = plate_layout(spec, dp, 2.66 * dp, make_tank(ts, "test"), at("test"), "plates.0");
+  Particles p;
+  p.resize(2 + l.walls.size());
+  p.n_fluid = 2;
+  p.mass = 1000.0 * dp * dp;
+  p.position[0] = {0.15 - 0.0010, 0.04};  // inside the plate (t/2 = 1.5 mm), came from the left
+  p.velocity[0] = {0.3, 0.1};
+  p.position[1] = {0.15 - 0.0040, 0.05};  // well clear of it
+  p.velocity[1] = {0.3, 0.0};
+  for (std::size_t k = 0; k < l.walls.size(); ++k) {
+    p.position[2 + k] = l.walls[k].position;
+    p.normal[2 + k] = l.walls[k].normal;
+  }
+  p.id = {0, 1};
+  for (std::size_t k = 0; k < l.walls.size(); ++k) p.id.push_back(static_cast<std::int32_t>(2 + k));
+  p.wall_motion_velocity.assign(l.walls.size(), Vec2{});
+  p.wall_motion_acceleration.assign(l.walls.size(), Vec2{});
+  NeighbourList nl(2.66 * dp, 0.5 * dp);
+  nl.build(p.position, p.n_fluid);
+  PlateCoupling plate(l, 0);
+  EXPECT_EQ(plate.enforce_contact(p, nl, dp, 1e-5), 1u);
+  const double contact = 0.0015 + 0.25 * dp;
+  EXPECT_LT(p.position[0].x, 0.15 - contact + 1e-12);  // back out on the left, mirrored
+  EXPECT_NEAR(p.position[0].y, 0.04, 1e-12);           // slip: not moved along the plate
+  EXPECT_NEAR(p.velocity[0].x, 0.0, 1e-12);            // no velocity into the (resting) plate
+  EXPECT_NEAR(p.velocity[0].y, 0.1, 1e-12);            // tangential velocity kept
+  EXPECT_EQ(p.position[1].x, 0.15 - 0.0040);           // the clear particle is untouched
+  EXPECT_EQ(p.velocity[1].x, 0.3);
+  EXPECT_EQ(plate.contacts(), 1u);
 }
 
 }  // namespace
