@@ -193,19 +193,21 @@ std::size_t PlateCoupling::enforce_contact(Particles& p, const NeighbourList& nl
     const std::size_t k = c.segment;
     const Vec2 a = nodes[k], e = normalized(nodes[k + 1] - a);
     const Vec2 n = side * perp(e);  // out of the plate, towards the particle's side
-    // Onto the contact surface, plus 1% of the depth: two particles with one foot must not land on
-    // one point (a zero pair distance is 0/0 in the viscous terms). Moving them further (mirrored
-    // about the surface) pushed them into the compressed fluid there: non-finite at 0.71 s.
-    const double depth = contact - side * c.offset;  // > 0
-    p.position[i] = a + (c.t * norm(nodes[k + 1] - a)) * e + (contact + 0.01 * depth) * n;
     const Vec2 v_plate = (1.0 - c.t) * node_velocity[k] + c.t * node_velocity[k + 1];
     const double approach = dot(p.velocity[i] - v_plate, n);
-    if (approach < 0.0) {
+    const double half = 0.5 * layout_.spec.thickness;
+    const bool inside = side * c.offset < half;
+    if (approach >= 0.0 && !inside) return;  // close, but leaving: nothing to do
+    if (approach < 0.0) {  // stop the approach (slip: the tangential velocity is kept)
       p.velocity[i] -= approach * n;
-      const Vec2 impulse_on_plate = (p.mass * approach) * n;  // the fluid's lost momentum into the plate
+      const Vec2 impulse_on_plate = (p.mass * approach) * n;  // the momentum the fluid lost into the plate
       contact_force_[k] += ((1.0 - c.t) / dt) * impulse_on_plate;
       contact_force_[k + 1] += (c.t / dt) * impulse_on_plate;
     }
+    // A particle already inside the plate goes back out of its face, halfway to the contact
+    // distance. (Putting every close particle onto the contact surface squeezed pairs of them
+    // together: non-finite at 0.40 s of the pulse case.)
+    if (inside) p.position[i] += (half + 0.5 * (contact - half) - side * c.offset) * n;
     ++moved;
   });
   contacts_ += moved;

@@ -59,11 +59,12 @@ class PlateCoupling {
   void damp(Particles& p, double factor);
   void restart();
 
-  // Contact (Dincer 2019, sec. 2.3: the fluid may not invade the structure): a fluid particle that
-  // came closer to the deformed centre line than t/2 + dp/4, within the span, is put back on that
-  // distance on the side it was last seen on, and its velocity into the plate (relative to the
-  // plate) is removed, the tangential part kept (slip). The momentum taken from it acts on the
-  // plate in its next step. Returns the number of particles put back this step.
+  // Contact (Dincer 2019, sec. 2.3: the fluid may not invade the structure): a fluid particle
+  // closer to the deformed centre line than t/2 + dp/4, within the span, on the side it was last
+  // seen on, that moves towards the plate (relative to it) loses that normal velocity (slip: the
+  // tangential part is kept); one already inside the plate is moved back out of its face. The
+  // momentum taken from the fluid acts on the plate in its next step. Returns the number of
+  // particles corrected this step.
   std::size_t enforce_contact(Particles& p, const NeighbourList& nl, double dp, double dt);
   std::size_t contacts() const { return contacts_; }  // since t = 0
 
