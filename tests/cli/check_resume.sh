@@ -4,8 +4,9 @@
 # the same printed numbers) and the same response; the stopped run exits 4 with a checkpoint.
 set -u
 exe=$1 case=$2 dir=$3
+shift 3  # further arguments: extra options for both runs (they come last, so they win)
 rm -rf "$dir"; mkdir -p "$dir"
-common=(--set particles.dp=0.02 --set time.end=2 --set output.snapshot_interval=0.5 --threads 1 --quiet)
+common=(--set particles.dp=0.02 --set time.end=2 --set output.snapshot_interval=0.5 --threads 1 --quiet "$@")
 fail() { echo "FAIL: $*"; exit 1; }
 
 "$exe" run "$case" "${common[@]}" --checkpoint-every 0.25 --out "$dir/full" || fail "full run exit $?"

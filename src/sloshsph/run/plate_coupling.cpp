@@ -98,10 +98,9 @@ void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
   BeamLoads loads = beam_.zero_loads();
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (force_[k].x != 0.0 || force_[k].y != 0.0) beam_.add_force(points_[k], force_[k], loads);
-  if (contacts_ > 0) {  // the contact impulses of the last step, as forces
-    if (loads.nodal_forces.empty()) loads.nodal_forces.assign(contact_force_.size(), Vec2{});
-    for (std::size_t n = 0; n < contact_force_.size(); ++n) loads.nodal_forces[n] += contact_force_[n];
-  }
+  // The contact impulses of the last step, as forces.
+  if (loads.nodal_forces.empty()) loads.nodal_forces.assign(contact_force_.size(), Vec2{});
+  for (std::size_t n = 0; n < contact_force_.size(); ++n) loads.nodal_forces[n] += contact_force_[n];
   std::fill(contact_force_.begin(), contact_force_.end(), Vec2{});
   // The body force of the tank frame (gravity, the base's acceleration, pitch terms) at the
   // middle of the undeformed plate: uniform over the plate.
