@@ -68,7 +68,7 @@ struct BeamSpec {
 
   Vec2 gravity{};                  // [m/s^2] body load, e.g. {0, -9.81}
   // Lumped is the default: with these reduced-integration elements it gives the more accurate bending
-  // frequencies (see structure_results.md) and a diagonal mass.
+  // frequencies (docs/validation.md, "Structure and signals") and a diagonal mass.
   BeamMass mass = BeamMass::kLumped;
 
   BeamIntegrator integrator = BeamIntegrator::kEnergyConserving;
