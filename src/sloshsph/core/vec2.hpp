@@ -23,6 +23,12 @@ inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline constexpr double norm2(Vec2 a) { return dot(a, a); }
 // Rotates a by +90 degrees.
 inline constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
+// Rotates a by `angle` radians, counter-clockwise.
+inline Vec2 rotated(Vec2 a, double angle) {
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  return {c * a.x - s * a.y, s * a.x + c * a.y};
+}
 inline Vec2 normalized(Vec2 a) {
   const double n = norm(a);
   return n > 0.0 ? a / n : Vec2{};

@@ -15,11 +15,6 @@ BeamSupport beam_support(PlateSupport s) {
                                      : BeamSupport::kFree;
 }
 
-Vec2 rotated(Vec2 v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
-
 }  // namespace
 
 BeamSpec plate_beam_spec(const PlateSpec& spec) {

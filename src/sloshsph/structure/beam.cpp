@@ -15,12 +15,6 @@ constexpr int kDofsPerNode = 3;
 constexpr int kMaxSubstepLevels = 5;  // a failed step is retried as 2, 4, ..., 32 sub-steps
 constexpr int kMaxBisections = 12;    // static load increments may be halved this often
 
-Vec2 rotated(Vec2 v, double angle) {
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
-
 // The director (across the thickness, towards face +1) of a section at angle beta.
 Vec2 director_at(double beta) { return {-std::sin(beta), std::cos(beta)}; }
 
