@@ -123,8 +123,7 @@ void PlateCoupling::restart() {
   max_abs_tip_dx_ = std::abs(tip_displacement().x);
   crossings_ = 0;
   contacts_ = 0;
-  first_crossing_time_ = -1.0;
-  first_crossing_id_ = -1;
+  first_crossing_ = {};
 }
 
 Vec2 PlateCoupling::displacement_at(double fraction) const {
@@ -173,43 +172,11 @@ void PlateCoupling::for_each_near_fluid(const Particles& p, const NeighbourList&
     }
 }
 
-std::size_t PlateCoupling::enforce_contact(Particles& p, const NeighbourList& nl, double dp, double dt) {
+std::size_t PlateCoupling::keep_fluid_out(Particles& p, const NeighbourList& nl, double dp, double dt, double time) {
   const std::vector<Vec2> nodes = beam_.node_positions();
   const std::vector<Vec2> node_velocity = beam_.node_velocities();
-  const double contact = 0.5 * layout_.spec.thickness + 0.25 * dp;
-  std::size_t moved = 0;
-  for_each_near_fluid(p, nl, [&](std::size_t i) {
-    const CentreLineOffset c = locate(p.position[i], nodes);
-    if (!c.in_span || std::abs(c.offset) >= contact) return;
-    const auto id = static_cast<std::size_t>(p.id[i]);
-    const int known = id < side_.size() ? side_[id] : 0;
-    const double side = known != 0 ? known : (c.offset >= 0.0 ? 1.0 : -1.0);
-    const std::size_t k = c.segment;
-    const Vec2 a = nodes[k], e = normalized(nodes[k + 1] - a);
-    const Vec2 n = side * perp(e);  // out of the plate, towards the particle's side
-    const Vec2 v_plate = (1.0 - c.t) * node_velocity[k] + c.t * node_velocity[k + 1];
-    const double approach = dot(p.velocity[i] - v_plate, n);
-    const double half = 0.5 * layout_.spec.thickness;
-    const bool inside = side * c.offset < half;
-    if (approach >= 0.0 && !inside) return;  // close, but leaving: nothing to do
-    if (approach < 0.0) {  // stop the approach (slip: the tangential velocity is kept)
-      p.velocity[i] -= approach * n;
-      const Vec2 impulse_on_plate = (p.mass * approach) * n;  // the momentum the fluid lost into the plate
-      contact_force_[k] += ((1.0 - c.t) / dt) * impulse_on_plate;
-      contact_force_[k + 1] += (c.t / dt) * impulse_on_plate;
-    }
-    // A particle already inside the plate goes back out of its face, halfway to the contact
-    // distance. (Putting every close particle onto the contact surface squeezed pairs of them
-    // together: non-finite at 0.40 s of the pulse case.)
-    if (inside) p.position[i] += (half + 0.5 * (contact - half) - side * c.offset) * n;
-    ++moved;
-  });
-  contacts_ += moved;
-  return moved;
-}
-
-void PlateCoupling::check_crossings(const Particles& p, const NeighbourList& nl, double time) {
-  const std::vector<Vec2> nodes = beam_.node_positions();
+  const double half = 0.5 * layout_.spec.thickness;
+  const double contact = half + 0.25 * dp;
   const double band = nl.search_radius();
   struct Near {
     std::int32_t id;
@@ -218,23 +185,26 @@ void PlateCoupling::check_crossings(const Particles& p, const NeighbourList& nl,
     double s;
   };
   std::vector<Near> now;
+  std::size_t corrected = 0;
   for_each_near_fluid(p, nl, [&](std::size_t i) {
     const CentreLineOffset c = locate(p.position[i], nodes);
-    if (!c.in_span || std::abs(c.offset) > band) return;
-    now.push_back({p.id[i], static_cast<std::int8_t>(c.offset >= 0.0 ? 1 : -1), p.position[i], c.s});
+    if (!c.in_span) return;
+    double offset = c.offset;
+    if (std::abs(offset) < contact && contact_correction(p, i, c, nodes, node_velocity, half, contact, dt, offset))
+      ++corrected;
+    if (std::abs(offset) <= band)
+      now.push_back({p.id[i], static_cast<std::int8_t>(offset >= 0.0 ? 1 : -1), p.position[i], c.s});
   });
+  contacts_ += corrected;
+
+  // Crossings: a particle seen on the other side than last step.
   std::int32_t max_id = 0;
   for (const Near& n : now) max_id = std::max(max_id, n.id);
   if (side_.size() <= static_cast<std::size_t>(max_id)) side_.resize(static_cast<std::size_t>(max_id) + 1, 0);
   for (const Near& n : now) {
     const std::int8_t before = side_[static_cast<std::size_t>(n.id)];
     if (before != 0 && before != n.side) {
-      if (crossings_ == 0) {
-        first_crossing_time_ = time;
-        first_crossing_id_ = n.id;
-        first_crossing_position_ = n.position;
-        first_crossing_s_ = n.s;
-      }
+      if (crossings_ == 0) first_crossing_ = {time, n.id, n.position, n.s};
       ++crossings_;
     }
   }
@@ -244,6 +214,39 @@ void PlateCoupling::check_crossings(const Particles& p, const NeighbourList& nl,
     side_[static_cast<std::size_t>(n.id)] = n.side;
     near_ids_.push_back(n.id);
   }
+  return corrected;
+}
+
+// One particle of keep_fluid_out() closer than `contact` to the centre line (c: where it is).
+// Returns true if it was corrected; `offset` is then its new signed offset.
+bool PlateCoupling::contact_correction(Particles& p, std::size_t i, const CentreLineOffset& c,
+                                       const std::vector<Vec2>& nodes, const std::vector<Vec2>& node_velocity,
+                                       double half, double contact, double dt, double& offset) {
+  const auto id = static_cast<std::size_t>(p.id[i]);
+  const int known = id < side_.size() ? side_[id] : 0;
+  const double side = known != 0 ? known : (c.offset >= 0.0 ? 1.0 : -1.0);
+  const std::size_t k = c.segment;
+  const Vec2 a = nodes[k], e = normalized(nodes[k + 1] - a);
+  const Vec2 n = side * perp(e);  // out of the plate, towards the particle's side
+  const Vec2 v_plate = (1.0 - c.t) * node_velocity[k] + c.t * node_velocity[k + 1];
+  const double approach = dot(p.velocity[i] - v_plate, n);
+  const bool inside = side * c.offset < half;
+  if (approach >= 0.0 && !inside) return false;  // close, but leaving: nothing to do
+  if (approach < 0.0) {  // stop the approach (slip: the tangential velocity is kept)
+    p.velocity[i] -= approach * n;
+    const Vec2 impulse_on_plate = (p.mass * approach) * n;  // the momentum the fluid lost into the plate
+    contact_force_[k] += ((1.0 - c.t) / dt) * impulse_on_plate;
+    contact_force_[k + 1] += (c.t / dt) * impulse_on_plate;
+  }
+  // A particle already inside the plate goes back out of its face, halfway to the contact
+  // distance. (Putting every close particle onto the contact surface squeezed pairs of them
+  // together: non-finite at 0.40 s of the pulse case.)
+  if (inside) {
+    const double target = half + 0.5 * (contact - half);
+    p.position[i] += (target - side * c.offset) * n;
+    offset = side * target;
+  }
+  return true;
 }
 
 std::size_t PlateCoupling::fluid_inside(const Particles& p, const NeighbourList& nl) {
@@ -269,10 +272,7 @@ void PlateCoupling::save_state(StateWriter& w, const std::string& prefix) const 
   w.value(prefix + ".crossings", static_cast<std::uint64_t>(crossings_));
   w.value(prefix + ".contacts", static_cast<std::uint64_t>(contacts_));
   w.array(prefix + ".contact_force", contact_force_);
-  w.value(prefix + ".first_crossing_time", first_crossing_time_);
-  w.value(prefix + ".first_crossing_id", first_crossing_id_);
-  w.value(prefix + ".first_crossing_position", first_crossing_position_);
-  w.value(prefix + ".first_crossing_s", first_crossing_s_);
+  w.value(prefix + ".first_crossing", first_crossing_);
 }
 
 void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
@@ -289,10 +289,7 @@ void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
   crossings_ = static_cast<std::size_t>(r.value<std::uint64_t>(prefix + ".crossings"));
   contacts_ = static_cast<std::size_t>(r.value<std::uint64_t>(prefix + ".contacts"));
   contact_force_ = r.array<Vec2>(prefix + ".contact_force");
-  first_crossing_time_ = r.value<double>(prefix + ".first_crossing_time");
-  first_crossing_id_ = r.value<std::int32_t>(prefix + ".first_crossing_id");
-  first_crossing_position_ = r.value<Vec2>(prefix + ".first_crossing_position");
-  first_crossing_s_ = r.value<double>(prefix + ".first_crossing_s");
+  first_crossing_ = r.value<PlateCrossing>(prefix + ".first_crossing");
 }
 
 }  // namespace sloshsph

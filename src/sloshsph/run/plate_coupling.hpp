@@ -28,6 +28,14 @@
 
 namespace sloshsph {
 
+// The first fluid particle seen to pass through a plate (PlateCoupling::keep_fluid_out).
+struct PlateCrossing {
+  double time = -1.0;     // s (-1: none)
+  std::int32_t id = -1;   // particle id
+  Vec2 position;          // m, where it was seen on the other side
+  double arc_length = 0;  // m from the plate's `from` end
+};
+
 // The beam of a plate (SI, per metre of out-of-plane width; gravity enters as the frame force).
 BeamSpec plate_beam_spec(const PlateSpec& spec);
 
@@ -59,24 +67,19 @@ class PlateCoupling {
   void damp(Particles& p, double factor);
   void restart();
 
-  // Contact (Dincer 2019, sec. 2.3: the fluid may not invade the structure): a fluid particle
-  // closer to the deformed centre line than t/2 + dp/4, within the span, on the side it was last
-  // seen on, that moves towards the plate (relative to it) loses that normal velocity (slip: the
-  // tangential part is kept); one already inside the plate is moved back out of its face. The
-  // momentum taken from the fluid acts on the plate in its next step. Returns the number of
-  // particles corrected this step.
-  std::size_t enforce_contact(Particles& p, const NeighbourList& nl, double dp, double dt);
+  // Once per step, over the fluid particles listed by the neighbour rows of the plate's particles:
+  //  * contact (Dincer 2019, sec. 2.3: the fluid may not invade the structure): a fluid particle
+  //    closer to the deformed centre line than t/2 + dp/4, within the span, on the side it was last
+  //    seen on, that moves towards the plate (relative to it) loses that normal velocity (slip: the
+  //    tangential part is kept); one already inside the plate is moved back out of its face. The
+  //    momentum taken from the fluid acts on the plate in its next step;
+  //  * crossings: a particle within the search radius of the span that is now on the other side
+  //    than last step passed through the plate; the count since the start and the first are kept.
+  // Returns the number of particles the contact corrected this step.
+  std::size_t keep_fluid_out(Particles& p, const NeighbourList& nl, double dp, double dt, double time);
   std::size_t contacts() const { return contacts_; }  // since t = 0
-
-  // Fluid particles that crossed the plate this step (came within 2 h of it on one side and are now
-  // on the other, within its span), from the neighbour rows of the plate's particles; the count
-  // since the start and the first one are kept.
-  void check_crossings(const Particles& p, const NeighbourList& nl, double time);
   std::size_t crossings() const { return crossings_; }
-  double first_crossing_time() const { return first_crossing_time_; }
-  std::int32_t first_crossing_id() const { return first_crossing_id_; }
-  Vec2 first_crossing_position() const { return first_crossing_position_; }
-  double first_crossing_arc_length() const { return first_crossing_s_; }  // m from the `from` end
+  const PlateCrossing& first_crossing() const { return first_crossing_; }
   // Fluid particles now inside the deformed plate (closer than t/2 to its centre line, within its span).
   std::size_t fluid_inside(const Particles& p, const NeighbourList& nl);
 
@@ -101,6 +104,9 @@ class PlateCoupling {
     double t = 0.0;
   };
   CentreLineOffset locate(Vec2 r, const std::vector<Vec2>& nodes) const;
+  bool contact_correction(Particles& p, std::size_t i, const CentreLineOffset& c, const std::vector<Vec2>& nodes,
+                          const std::vector<Vec2>& node_velocity, double half, double contact, double dt,
+                          double& offset);
   // Calls f(i) once for each fluid particle listed by the neighbour rows of the plate's particles.
   template <class F> void for_each_near_fluid(const Particles& p, const NeighbourList& nl, F&& f);
 
@@ -121,10 +127,7 @@ class PlateCoupling {
   std::size_t crossings_ = 0;
   std::size_t contacts_ = 0;
   std::vector<Vec2> contact_force_;  // per beam node, N/m: for the next step
-  double first_crossing_time_ = -1.0;
-  std::int32_t first_crossing_id_ = -1;
-  Vec2 first_crossing_position_;
-  double first_crossing_s_ = 0.0;
+  PlateCrossing first_crossing_;
 };
 
 }  // namespace sloshsph

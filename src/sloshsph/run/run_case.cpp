@@ -389,11 +389,12 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
                           {"crossings", pl.crossings()},
                           {"contacts", pl.contacts()}};
       if (pl.crossings() > 0) {
-        j["first_crossing_time_s"] = pl.first_crossing_time();
-        j["first_crossing_id"] = pl.first_crossing_id();
-        j["first_crossing_x"] = pl.first_crossing_position().x;
-        j["first_crossing_y"] = pl.first_crossing_position().y;
-        j["first_crossing_arc_length_m"] = pl.first_crossing_arc_length();
+        const PlateCrossing& c = pl.first_crossing();
+        j["first_crossing_time_s"] = c.time;
+        j["first_crossing_id"] = c.id;
+        j["first_crossing_x"] = c.position.x;
+        j["first_crossing_y"] = c.position.y;
+        j["first_crossing_arc_length_m"] = c.arc_length;
       }
       plates.push_back(j);
     }

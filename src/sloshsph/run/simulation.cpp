@@ -85,8 +85,7 @@ void Simulation::advance_plates(double dt, const FrameForce& frame) {
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
     plates_[k].advance(p, dt, frame);
-    plates_[k].enforce_contact(p, scheme_.neighbours(), spec_.particles.dp, dt);
-    plates_[k].check_crossings(p, scheme_.neighbours(), time_ + dt);
+    plates_[k].keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, dt, time_ + dt);
   }
 }
 
@@ -166,8 +165,7 @@ void Simulation::settle() {
     for (PlateCoupling& plate : plates_) {  // the plates settle with the fluid, damped alike
       plate.fluid_force(p, in.frame, spec_.fluid.density);
       plate.advance(p, in.dt, in.frame);
-      plate.enforce_contact(p, scheme_.neighbours(), spec_.particles.dp, in.dt);
-      plate.check_crossings(p, scheme_.neighbours(), -1.0);
+      plate.keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, in.dt, -1.0);
       plate.damp(p, factor);
     }
     t += in.dt;

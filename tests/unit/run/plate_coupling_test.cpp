@@ -165,7 +165,7 @@ TEST(PlateCoupling, ContactPutsAnInvadingParticleBackWithSlip) {
   NeighbourList nl(2.66 * dp, 0.5 * dp);
   nl.build(p.position, p.n_fluid);
   PlateCoupling plate(l, 0);
-  EXPECT_EQ(plate.enforce_contact(p, nl, dp, 1e-5), 1u);
+  EXPECT_EQ(plate.keep_fluid_out(p, nl, dp, 1e-5, 0.0), 1u);
   const double contact = 0.0015 + 0.25 * dp;
   EXPECT_NEAR(p.position[0].x, 0.15 - 0.0015 - 0.5 * (contact - 0.0015), 1e-12);  // out of the left face
   EXPECT_NEAR(p.position[0].y, 0.04, 1e-12);           // slip: not moved along the plate
