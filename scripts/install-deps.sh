@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev     # tests and benchmarks
   python3 python3-numpy python3-scipy python3-matplotlib  # plots and reports
   libopenmpi-dev openmpi-bin                     # sweeps across machines (mpirun)
+  chromium                                       # headless check of report.html (test only)
 )
 
 missing=()

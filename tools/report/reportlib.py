@@ -454,7 +454,7 @@ h1{font-size:1.6em;margin:.2em 0 .1em}h2{border-bottom:2px solid #d0d7de;padding
 .sub{color:#57606a;margin:0 0 1em}
 nav{background:#f3f5f7;border:1px solid #d0d7de;border-radius:6px;padding:.4em .9em;margin:1em 0}
 nav a{margin-right:1.1em;text-decoration:none;color:#0969da}
-table{border-collapse:collapse;margin:.6em 0;font-size:.92em}
+table{border-collapse:collapse;margin:.6em 0;font-size:.92em}.table-wrap{overflow-x:auto;max-width:100%}
 th,td{border:1px solid #d0d7de;padding:.25em .6em;text-align:right;vertical-align:top}
 th{background:#f3f5f7}td.l,th.l{text-align:left}
 table.kv td:first-child{text-align:left;color:#57606a}
@@ -495,7 +495,9 @@ def table(header, rows, left_columns=1):
         return f"<{tag}{cls}>{v}</{tag}>"
     head = "".join(cell("th", i, esc(h)) for i, h in enumerate(header))
     body = "".join("<tr>" + "".join(cell("td", i, v) for i, v in enumerate(r)) + "</tr>" for r in rows)
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+    # Wide tables (a sweep's points: one column per recorded quantity) scroll inside the page
+    # instead of widening it (seen in Chromium by tools/report/check_in_browser.py: 1880 px).
+    return f'<div class="table-wrap"><table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table></div>'
 
 
 def figure_html(png_bytes, caption, alt):
