@@ -10,11 +10,17 @@
 
 #include "dambreak_support.hpp"
 #include "run_support.hpp"
+#include "validation_check.hpp"
 
 namespace sloshsph {
 namespace {
 
+using testing::check_at_most;
+using testing::check_between;
+using testing::check_relative;
 using testing::report;
+
+const std::string kFrontData = "Koshizuka & Oka (1996), data/refdata/koshizuka_oka_1996_dambreak/front_position.txt";
 
 // Both schemes at the cases' dp = 20 mm (100 particles up the 2 m column; 5000 in all), 0.8 s.
 // The WCSPH case uses Shao's repulsive walls (leak-free at the impact, 0.67 s); here the Adami
@@ -26,7 +32,8 @@ std::vector<testing::Sample> front_of(const std::string& scheme) {
   if (scheme == "wcsph") set.push_back("scheme.walls=adami");
   const auto r =
       testing::run_case_in_memory(scheme == "isph" ? "dambreak_koshizuka.toml" : "dambreak_koshizuka_wcsph.toml", set);
-  EXPECT_EQ(r.leaked, 0u) << scheme;
+  check_at_most("particles leaked from the tank by 0.8 s, " + std::string(scheme == "isph" ? "ISPH" : "WCSPH"),
+                static_cast<double>(r.leaked), 0.0, "none may leave");
   std::printf("  %s: %zu steps in %.0f s\n", scheme.c_str(), r.steps, r.wall_seconds);
   std::vector<testing::Sample> out;
   for (std::size_t i = 0; i < r["time"].size(); ++i) out.push_back({r["time"][i], r["front:tip"][i]});
@@ -61,14 +68,39 @@ TEST(Validation, DamBreakFrontKoshizukaOka) {
     report("dambreak_koshizuka_" + name + "_rms_m", unshifted);
     report("dambreak_koshizuka_" + name + "_shift_s", best.shift);
     report("dambreak_koshizuka_" + name + "_rms_after_shift_m", best.rms);
-    EXPECT_LE(best.rms, 0.05) << name;
-    EXPECT_GE(best.shift, 0.0) << name;
-    EXPECT_LE(best.shift, 0.06) << name;
+    const std::string label = name == "isph" ? "ISPH" : "WCSPH";
+    check_at_most("front RMS error after the best time shift, " + label, best.rms, 0.05,
+                  kFrontData + "; bar 5% of the column width W = 1 m", "m");
+    check_between("best shift of the experiment's time origin, " + label, best.shift, 0.0, 0.06,
+                  "gate delay of the experiment: the data may lag, never lead", "s");
+    // The unshifted 5% of W, which we knowingly miss (the experiment's time origin).
+    testing::check(testing::Check{.quantity = "front RMS error, unshifted, " + label,
+                                  .unit = "m",
+                                  .measured = unshifted,
+                                  .kind = testing::Tolerance::at_most,
+                                  .reference = 0.05,
+                                  .tolerance = NAN,
+                                  .source = kFrontData +
+                                            "; bar 5% of W (missed: the data do not state the time origin of the "
+                                            "release; see the validation notes)",
+                                  .asserted = false});
     const testing::Sample a = data.at(3), b = data.at(11);  // 0.322 s, 0.594 s
     const double speed_data = (b.x - a.x) / (b.t - a.t);
     const double speed = (testing::front_at(*run, b.t) - testing::front_at(*run, a.t)) / (b.t - a.t);
     report("dambreak_koshizuka_" + name + "_front_speed_ratio", speed / speed_data);
-    EXPECT_NEAR(speed / speed_data, 1.0, 0.05) << name;
+    check_relative("mean front speed between 0.322 s and 0.594 s, unshifted, " + label, speed, speed_data, 0.05,
+                   kFrontData + ": the data points at 0.322 s and 0.594 s", "m/s");
+    std::vector<double> t, x, data_t, data_x;
+    for (const testing::Sample& s : *run) {
+      t.push_back(s.t);
+      x.push_back(s.x);
+    }
+    for (const testing::Sample& d : data) {
+      data_t.push_back(d.t);
+      data_x.push_back(d.x);
+    }
+    testing::record_curve({"front_" + name, "Dam-break surge front, " + label + ", dp = 20 mm", "time (s)",
+                           "front position x (m)", t, x, "Koshizuka & Oka (1996), experiment", data_t, data_x});
   }
   double sum = 0.0;
   int n = 0;
@@ -79,7 +111,8 @@ TEST(Validation, DamBreakFrontKoshizukaOka) {
     }
   const double between = std::sqrt(sum / n);
   report("dambreak_isph_vs_wcsph_rms_m", between);
-  EXPECT_LE(between, 0.02);
+  check_at_most("RMS of ISPH minus WCSPH front, 0-0.65 s", between, 0.02,
+                "agreement of the two schemes, 2% of the column width W = 1 m", "m");
 }
 
 }  // namespace

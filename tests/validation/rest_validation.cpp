@@ -1,11 +1,17 @@
 // Tanks at rest: hydrostatic pressure, no leaks, no spurious flow (thesis 2.6.1).
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "run_support.hpp"
+#include "validation_check.hpp"
 
 namespace sloshsph {
 namespace {
 
+using testing::check_absolute;
+using testing::check_at_most;
+using testing::check_relative;
 using testing::report;
 using testing::run_case_in_memory;
 
@@ -20,24 +26,33 @@ TEST(Validation, HydrostaticTank) {
                                     [&](const Simulation& s) { wall_particles = double(s.particles().n_wall()); });
   const double scale = rho * g * H;
   double worst = 0.0;
+  std::vector<double> heights, pressures, hydrostatic;
   for (const auto& [name, values] : r.series) {
     if (name.rfind("p:y", 0) != 0) continue;
     const double y = std::stod(name.substr(3));
     const double expected = rho * g * (H - y);
     const double error = std::abs(values.back() - expected) / scale;
     worst = std::max(worst, error);
-    EXPECT_LT(error, 0.02) << name << ": " << values.back() << " Pa vs " << expected << " Pa";
+    // |p - rho g (H - y)| / (rho g H) < 2%, i.e. within 0.02 rho g H of the hydrostatic value.
+    check_absolute("pressure at y = " + name.substr(3) + " m, at 5 s", values.back(), expected, 0.02 * scale,
+                   "hydrostatics rho g (H - y), H = 0.25 m; tolerance 2% of rho g H", "Pa");
+    heights.push_back(y);
+    pressures.push_back(values.back());
+    hydrostatic.push_back(expected);
   }
   report("hydrostatic_worst_probe_error_fraction_of_rho_g_H", worst);
-  EXPECT_EQ(r.leaked, 0u);
+  testing::record_curve({"pressure_profile", "Tank at rest, pressure probes at 5 s (dp = 10 mm)", "height y (m)",
+                         "pressure (Pa)", heights, pressures, "hydrostatic rho g (H - y)", heights, hydrostatic, false});
+  check_at_most("particles leaked from the tank", static_cast<double>(r.leaked), 0.0, "none may leave");
   const double limit = 0.01 * std::sqrt(g * H);
   report("hydrostatic_max_speed_m_s", r.max_speed_end);
   report("hydrostatic_max_speed_fraction_of_sqrt_gH", r.max_speed_end / std::sqrt(g * H));
-  EXPECT_LT(r.max_speed_end, limit);
+  check_at_most("maximum fluid speed at 5 s", r.max_speed_end, limit, "1% of sqrt(g H), H = 0.25 m", "m/s");
   // The walls carry the weight: the vertical wall force equals m g (within 0.5%).
   const double weight = r["fluid_mass"].back() * g;
   report("hydrostatic_vertical_wall_force_over_weight", r["F_wy"].back() / weight);
-  EXPECT_NEAR(r["F_wy"].back() / weight, 1.0, 0.005);
+  check_relative("vertical force of the fluid on the walls, at 5 s", r["F_wy"].back(), weight, 0.005,
+                 "the fluid's weight m g", "N/m");
   report("hydrostatic_wall_seconds", r.wall_seconds);
 }
 

@@ -12,6 +12,7 @@
 #include "sloshsph/linear/fluid_mesh.hpp"
 #include "sloshsph/linear/modal.hpp"
 #include "sloshsph/linear/rectangular.hpp"
+#include "validation_check.hpp"
 
 namespace sloshsph {
 namespace {
@@ -89,7 +90,10 @@ TEST(SloshingModes, RectangleMatchesTheTanhFormula) {
       const double exact = rectangular_sloshing_omega(1.0, h, kG, n);
       std::printf("  rectangle h/L = %.2f  omega_%d = %.6f rad/s, exact %.6f, error %+.1e\n", h, n,
                   modes[n - 1].omega, exact, modes[n - 1].omega / exact - 1.0);
-      EXPECT_NEAR(modes[n - 1].omega, exact, 0.005 * exact) << "h = " << h << ", n = " << n;
+      char quantity[80];
+      std::snprintf(quantity, sizeof quantity, "omega_%d, modal solver, rectangle L = 1 m, h = %.2f m", n, h);
+      testing::check_relative(quantity, modes[n - 1].omega, exact, 0.005,
+                              "exact linear theory, omega_n^2 = (n pi g / L) tanh(n pi h / L)", "rad/s");
       EXPECT_NEAR(modes[n - 1].frequency, modes[n - 1].omega / (2.0 * kPi), 1e-12);
     }
     EXPECT_NEAR(modes[0].omega, rectangular_sloshing_omega(1.0, h, kG), 1e-4 * modes[0].omega);
@@ -123,7 +127,8 @@ TEST(SloshingModes, RightAngledVMatchesLambAndKirchhoff) {
   ASSERT_EQ(modes.size(), 3u);
   for (int n = 0; n < 3; ++n) {
     std::printf("  V 45 deg, h = 0.1 m: omega_%d = %.5f rad/s, exact %.5f\n", n + 1, modes[n].omega, exact[n]);
-    EXPECT_NEAR(modes[n].omega, exact[n], 0.005 * exact[n]);
+    testing::check_relative("omega_" + std::to_string(n + 1) + ", modal solver, V 45 deg, h = 0.1 m", modes[n].omega,
+                            exact[n], 0.005, "exact solutions of Lamb, Hydrodynamics, sec. 258", "rad/s");
   }
   std::printf("  thesis Tables 3.2/3.4/3.8 (long-wave eq. 3.32): 11.909 rad/s, %+.1f%% from exact\n",
               100.0 * (11.909 / exact[0] - 1.0));
@@ -144,7 +149,10 @@ TEST(SloshingModes, CircularTankMatchesTable310) {
     const double omega = first_sloshing_omega(c, depth[i], kG);
     std::printf("  circular R = 0.5 m, h = %.2f m: modal omega_1 = %.4f rad/s, Table 3.10 %.3f (%+.2f%%)\n",
                 depth[i], omega, table[i], 100.0 * (omega / table[i] - 1.0));
-    EXPECT_NEAR(omega, table[i], 0.01 * table[i]);
+    char quantity[80];
+    std::snprintf(quantity, sizeof quantity, "omega_1, modal solver, circular R = 0.5 m, h = %.2f m", depth[i]);
+    testing::check_relative(quantity, omega, table[i], 0.01, "thesis Table 3.10 (from the approximate eq. 3.36)",
+                            "rad/s");
   }
 }
 
