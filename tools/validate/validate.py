@@ -372,7 +372,8 @@ def main():
                 failed = True
         what = " and ".join(f"`{lab}`" for lab in labels)
         run_info = (f"latest invocation {now}, commit {revision}, labels {what}"
-                    + (f", tests matching `{a.filter}`" if a.filter else "") + f": {len(outcome)} tests ran")
+                    + (f", tests matching `{a.filter}`" if a.filter else "")
+                    + f": {len(outcome)} test{'' if len(outcome) == 1 else 's'} ran")
 
     summary_plot = plot_summary(results, os.path.join(figures_dir, "summary.png"))
     notes_path = os.path.join(a.docs, NOTES)

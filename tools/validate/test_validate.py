@@ -1,0 +1,124 @@
+#!/usr/bin/python3
+"""Test of tools/validate/validate.py (`sloshsph validate`) on a made-up build tree.
+
+    /usr/bin/python3 tools/validate/test_validate.py      (exit code 0 on success)
+
+The build tree is a hand-written CTestTestfile.cmake with three tests that stand for the real
+ones: `Fake.Passes` (label validation) records two passing checks and a curve, `Fake.Fails`
+(validation) records a failing check and a known miss and exits 1, `FakeLong.NotRun` (long) is not
+run without --long. Checked:
+- the exit code is 3 when a test fails, 0 when every test that ran passed;
+- validation.md has the summary, a row per check with its verdict (pass, **FAIL**, known miss),
+  the long test as not run, the curve's plot, and the notes below the tables;
+- a second invocation that runs only Fake.Passes keeps Fake.Fails's earlier result, with the
+  commit and date it came from;
+- `--no-run` rewrites the page from results.json alone.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+VALIDATE = os.path.join(HERE, "validate.py")
+PY = sys.executable or "/usr/bin/python3"
+failures = []
+
+
+def check(condition, what):
+    print(("  ok: " if condition else "  FAIL: ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def record(name, rows):
+    """A shell command that writes the JSON lines of `rows` as test `name` would."""
+    lines = "\\n".join(json.dumps(dict(test=name, **r)).replace("'", "") for r in rows)
+    return f"printf '{lines}\\n' > \"$SLOSHSPH_VALIDATION_RECORD/{name}.jsonl\""
+
+
+def make_build_tree(build):
+    os.makedirs(build)
+    passing = [
+        dict(quantity="pressure at the floor", unit="Pa", measured=2456.0, kind="relative", reference=2452.5,
+             tolerance=0.02, source="hydrostatics", asserted=True, **{"pass": True}),
+        dict(quantity="particles leaked", unit="", measured=0, kind="at_most", reference=0, tolerance=None,
+             source="none may leave", asserted=True, **{"pass": True}),
+    ]
+    failing = [
+        dict(quantity="front RMS error", unit="m", measured=0.28, kind="at_most", reference=0.05, tolerance=None,
+             source="Koshizuka and Oka", asserted=True, **{"pass": False}),
+        dict(quantity="front RMS, unshifted", unit="m", measured=0.27, kind="at_most", reference=0.05,
+             tolerance=None, source="known miss", asserted=False, **{"pass": False}),
+    ]
+    curve = json.dumps(dict(test="Fake.Passes", name="profile", title="a profile", x_label="y (m)",
+                            y_label="p (Pa)", x=[0.0, 0.1, 0.2], measured=[2456.0, 1475.0, 490.0],
+                            reference_label="hydrostatic", reference_x=[0.0, 0.2], reference_y=[2452.5, 490.5],
+                            reference_as_points=False))
+    curve_cmd = f"printf '%s' '{curve}' > \"$SLOSHSPH_VALIDATION_RECORD/Fake.Passes.profile.curve.json\""
+    tests = [
+        ("Fake.Passes", "validation", record("Fake.Passes", passing) + " && " + curve_cmd),
+        ("Fake.Fails", "validation", record("Fake.Fails", failing) + " && exit 1"),
+        ("FakeLong.NotRun", "long", "exit 1"),
+    ]
+    with open(os.path.join(build, "CTestTestfile.cmake"), "w") as f:
+        for name, label, command in tests:
+            escaped = command.replace("\\", "\\\\").replace('"', '\\"')
+            f.write(f'add_test([=[{name}]=] "/bin/sh" "-c" "{escaped}")\n')
+            f.write(f'set_tests_properties([=[{name}]=] PROPERTIES LABELS "{label}")\n')
+
+
+def run(build, docs, *extra):
+    out = subprocess.run([PY, VALIDATE, "--build-dir", build, "--docs", docs, "--source-dir", HERE, *extra],
+                         capture_output=True, text=True)
+    return out.returncode, out.stdout + out.stderr
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        build, docs = os.path.join(tmp, "build"), os.path.join(tmp, "docs")
+        make_build_tree(build)
+        os.makedirs(os.path.join(docs, "validation"))
+        with open(os.path.join(docs, "validation", "notes.md"), "w") as f:
+            f.write("<!-- header -->\nThe discussion, by hand.\n")
+
+        code, log = run(build, docs)
+        check(code == 3, f"a failing test gives exit code 3 (got {code})")
+        page = open(os.path.join(docs, "validation.md")).read()
+        check("2 of 3 tests have results: 1 passed, 1 failed" in page, "summary counts the tests")
+        check("| pressure at the floor | 2452 Pa (hydrostatics) | ± 2 % | 2456 Pa (+0.14 %) | pass |" in page,
+              "a relative check's row: reference, tolerance, measured with its deviation, verdict")
+        check("| front RMS error | Koshizuka and Oka | ≤ 0.05 m | 0.2800 m | **FAIL** |" in page, "a failed check")
+        check("fail (known miss, not asserted)" in page, "a recorded known miss")
+        check("| `FakeLong.NotRun` | long | not run |" in page, "the long test is listed as not run")
+        check("figures/validation/Fake.Passes.profile.png" in page
+              and os.path.exists(os.path.join(docs, "figures", "validation", "Fake.Passes.profile.png")),
+              "the curve is plotted and linked")
+        check(page.rstrip().endswith("The discussion, by hand.") and "<!-- header -->" not in page,
+              "the notes follow the tables, without their header comment")
+        first = json.load(open(os.path.join(docs, "validation", "results.json")))["tests"]["Fake.Fails"]
+
+        code, log = run(build, docs, "--filter", "^Fake\\.Passes$")
+        check(code == 0, f"only the passing test: exit code 0 (got {code})")
+        kept = json.load(open(os.path.join(docs, "validation", "results.json")))["tests"]["Fake.Fails"]
+        check(kept == first, "a test that did not run keeps its earlier result, commit and date")
+        page = open(os.path.join(docs, "validation.md")).read()
+        check("1 test ran" in page and "**failed**" in page, "the page says what ran and still shows the old failure")
+
+        os.remove(os.path.join(docs, "validation.md"))
+        code, log = run(build, docs, "--no-run")
+        check(code == 0 and os.path.exists(os.path.join(docs, "validation.md")), "--no-run rewrites the page")
+
+        code, log = run(os.path.join(tmp, "nothing"), docs)
+        check(code == 2 and ("cannot list the tests" in log or "no tests labelled" in log),
+              f"not a build tree: exit code 2 (got {code})")
+    if failures:
+        print(f"{len(failures)} validate checks failed")
+        return 1
+    print("all validate tests passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
