@@ -1,6 +1,7 @@
-// sloshsph sweep CASE --beta A:B:N [--jobs J] [--threads T] [--out DIR] [--set KEY=VALUE]...
-// One `sloshsph run` child process per frequency ratio, J at a time; each point keeps its run
-// directory (DIR/beta_X.XXXX, its log DIR/beta_X.XXXX.log). A failed point is reported and the
+// sloshsph sweep CASE [--beta A:B:N] [--jobs J] [--threads T] [--out DIR] [--set KEY=VALUE]...
+// One `sloshsph run` child process per point (frequency ratio times the values of every ranged
+// --set KEY=A:B:N or KEY=a,b,c), J at a time; each point keeps its run directory
+// (DIR/beta_X.XXXX, or with ranged sets DIR/beta_X.XXXX__KEY_VALUE..., and its .log). A failed point is reported and the
 // sweep goes on; re-running the same command skips the points already finished.
 #include <fcntl.h>
 #include <omp.h>
@@ -47,6 +48,14 @@ std::string read_text(const fs::path& path) {
   return s.str();
 }
 
+// Every --set of one point: those that hold for every point, then the point's frequency and
+// axis values (the ranged --set texts are replaced by the point's values).
+std::vector<std::string> point_sets(const SweepOptions& o, const SweepPoint& p) {
+  std::vector<std::string> sets = split_sweep_sets(o.sets).fixed;
+  sets.insert(sets.end(), p.overrides.begin(), p.overrides.end());
+  return sets;
+}
+
 // Starts `sloshsph run` for one point, its output going to DIR/<label>.log.
 pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool force) {
   std::vector<std::string> args;
@@ -56,8 +65,7 @@ pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool 
     args = {self_executable(), "resume", p.directory, "--quiet", "--threads", std::to_string(threads)};
   } else {
     args = {self_executable(), "run", o.case_path, "--out", p.directory, "--quiet", "--threads", std::to_string(threads)};
-    for (const std::string& s : o.sets) args.insert(args.end(), {"--set", s});
-    args.insert(args.end(), {"--set", p.override_text});
+    for (const std::string& s : point_sets(o, p)) args.insert(args.end(), {"--set", s});
     if (force) args.push_back("--force");
   }
   const std::string log = p.directory + ".log";
@@ -84,9 +92,7 @@ pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool 
 bool already_done(const SweepOptions& o, const SweepPoint& p) {
   const std::string status = point_status(p.directory);
   if (status != "completed" && !(status == "failed" && !o.retry_failed)) return false;
-  std::vector<std::string> sets = o.sets;
-  sets.push_back(p.override_text);
-  const std::string expected = resolved_case_toml(load_case(o.case_path, sets));
+  const std::string expected = resolved_case_toml(load_case(o.case_path, point_sets(o, p)));
   if (read_text(fs::path(p.directory) / "case.toml") != expected)
     throw InputError(p.directory, "", "this point was run from a different case or --set values; use another --out");
   return true;
@@ -127,17 +133,18 @@ void collect_remote_summaries(const SweepRanks& ranks, const std::vector<SweepPo
 }
 
 int run_sweep(const SweepOptions& o) {
-  const CaseSpec spec = load_case(o.case_path, o.sets);
+  const SweepSets sets = split_sweep_sets(o.sets);
+  const CaseSpec spec = load_case(o.case_path, sets.fixed);
   const std::string dir = o.out_dir.empty() ? (fs::path("out") / (spec.name + "_sweep")).string() : o.out_dir;
-  const std::vector<SweepPoint> points = plan_sweep(spec, parse_beta_range(o.beta), dir);
+  std::vector<SweepPoint> points =
+      plan_sweep(spec, o.beta.empty() ? std::vector<double>{} : parse_beta_range(o.beta), sets.axes, dir);
   const SweepRanks ranks;
   // Every point's case is read before anything runs: a bad point fails the sweep at once.
   std::vector<const SweepPoint*> queue;
   std::size_t owned = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
-    std::vector<std::string> sets = o.sets;
-    sets.push_back(points[k].override_text);
-    (void)load_case(o.case_path, sets);
+    const CaseSpec point_spec = load_case(o.case_path, point_sets(o, points[k]));
+    if (o.beta.empty()) points[k].beta = excitation_beta(point_spec);  // the case's own, per point
     if (!ranks.mine(k)) continue;
     ++owned;
     if (!already_done(o, points[k])) queue.push_back(&points[k]);
@@ -180,7 +187,7 @@ int run_sweep(const SweepOptions& o) {
   for (std::size_t k = 0; k < points.size(); ++k)
     if (ranks.rank() == 0 || ranks.mine(k)) considered.push_back(points[k]);
   if (ranks.rank() == 0) {
-    write_file_atomic((fs::path(dir) / "frequency_response.csv").string(), frequency_response_csv(spec, points));
+    write_file_atomic((fs::path(dir) / "frequency_response.csv").string(), frequency_response_csv(spec, sets.axes, points));
     if (!o.quiet)
       std::fprintf(stderr, "%s %zu points, %zu failed here -> %s/frequency_response.csv\n", prefix(ranks).c_str(),
                    points.size(), failed, dir.c_str());
@@ -196,13 +203,19 @@ int run_sweep(const SweepOptions& o) {
 
 Command add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
-  CLI::App* sub = app.add_subcommand("sweep", "Run one simulation per frequency ratio and tabulate the response");
+  CLI::App* sub = app.add_subcommand(
+      "sweep", "Run one simulation per frequency ratio (and per value of ranged --set keys) and tabulate the response");
   sub->add_option("case", o->case_path, "Case file (TOML) with a harmonic or pitch excitation")->required();
-  sub->add_option("--beta", o->beta, "Frequency ratios: A:B:N (N points from A to B), a,b,c, or one value")->required();
+  sub->add_option("--beta", o->beta,
+                  "Frequency ratios: A:B:N (N points from A to B), a,b,c, or one value (default: the case's own)");
   sub->add_option("--jobs", o->jobs, "Points run at the same time (default 1)")->check(CLI::PositiveNumber);
   sub->add_option("--threads", o->threads, "OpenMP threads per point (default: cores / jobs)")->check(CLI::PositiveNumber);
   sub->add_option("--out", o->out_dir, "Sweep directory (default: out/<case name>_sweep)");
-  add_set_option(sub, o->sets);
+  sub->add_option("--set", o->sets,
+                  "Override a case key, KEY=VALUE (repeatable); KEY=A:B:N or KEY=a,b,c sweeps the key over those "
+                  "values (every combination with the other swept keys and --beta)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   sub->add_flag("--retry-failed", o->retry_failed, "Run again the points that failed in an earlier attempt");
   sub->add_flag("--quiet", o->quiet, "No progress output");
   sub->add_flag("--report", o->report, "Write plots and report.html into the sweep directory at the end");

@@ -89,6 +89,7 @@ def is_numeric(values):
 class Point:
     def __init__(self):
         self.values = {}
+        self.texts = {}  # the swept keys' values as written (set:<key> columns), numeric or not
         self.status = ""
         self.run_dir = None
         self.run = None
@@ -120,6 +121,7 @@ def load_points(sweep_dir, notes, args):
                 if h in numeric:
                     p.values[h] = as_float([cols[h][i]])[0]
             p.status = cols["status"][i] if "status" in cols else ""
+            p.texts = {h: cols[h][i] for h in header if h.startswith("set:")}
             for key in RUN_DIR_COLUMNS:
                 if key in cols and cols[key][i]:
                     path = os.path.join(sweep_dir, cols[key][i])
@@ -243,6 +245,28 @@ def normalised(values, kind, factors):
 # Plots
 
 
+def abscissa(header, points):
+    """The x of the curves: beta; or, when beta is the same at every point and a key was swept
+    (`--set KEY=A:B:N`, column set:KEY), the first swept key with numeric values. Every other
+    swept key splits the points into one curve per value."""
+    beta = np.array([p.values.get("beta", math.nan) for p in points], dtype=float)
+    axes = [h for h in header if h.startswith("set:")]
+    finite = beta[np.isfinite(beta)]
+    beta_varies = len(finite) > 1 and np.ptp(finite) > 1e-9 * max(1.0, float(np.max(np.abs(finite))))
+    numeric = [h for h in axes if points and all(h in p.values for p in points)]
+    if beta_varies or not numeric:
+        name, x, label, short = "beta", beta, "frequency ratio β = ω / ω1", "β"
+    else:
+        name = numeric[0]
+        x = np.array([p.values[name] for p in points], dtype=float)
+        label = short = name[len("set:"):]
+    others = [h for h in axes if h != name]
+    groups = None
+    if others:
+        groups = np.array([", ".join(f"{h[len('set:'):]} = {p.texts.get(h, '')}" for h in others) for p in points])
+    return {"name": name, "values": x, "label": label, "short": short, "groups": groups}
+
+
 def response_figure(rep, stem, title, series, ylabel, reference, beta, ok):
     """series: [(column, label, values)]; reference: [(label, beta, values)]. A figure that cannot
     be made becomes a visible note instead of a crash."""
@@ -257,14 +281,21 @@ def response_figure(rep, stem, title, series, ylabel, reference, beta, ok):
 def _response_figure(rep, stem, title, series, ylabel, reference, beta, ok):
     fig, ax = plt.subplots(figsize=(8, 4.6), constrained_layout=True)
     order = np.argsort(beta)
-    for k, (col, lab, values) in enumerate(series):
-        c = f"C{k}"
-        sel = order[np.isfinite(values[order])]
-        ax.plot(beta[sel], values[sel], "-o", color=c, lw=1.2, ms=4, label=lab)
-        bad = sel[~ok[sel]]
-        if len(bad):
-            ax.plot(beta[bad], values[bad], "o", mfc="none", mec="red", ms=7,
-                    label="run not completed" if k == 0 else None)
+    groups = rep["x"]["groups"]
+    group_names = [None] if groups is None else list(dict.fromkeys(groups[order]))
+    k = 0
+    for col, lab, values in series:
+        for group in group_names:
+            c = f"C{k % 10}"
+            k += 1
+            members = order if group is None else order[groups[order] == group]
+            sel = members[np.isfinite(values[members])]
+            ax.plot(beta[sel], values[sel], "-o", color=c, lw=1.2, ms=4,
+                    label=lab if group is None else f"{lab}, {group}")
+            bad = sel[~ok[sel]]
+            if len(bad):
+                ax.plot(beta[bad], values[bad], "o", mfc="none", mec="red", ms=7,
+                        label="run not completed" if k == 1 else None)
     for j, (lab, rb, rv) in enumerate(reference):
         sel = np.isfinite(rb) & np.isfinite(rv)
         idx = np.argsort(rb[sel])
@@ -272,13 +303,13 @@ def _response_figure(rep, stem, title, series, ylabel, reference, beta, ok):
                 label=lab, alpha=0.9, marker=["s", "^", "v", "D"][j % 4])
     if any(np.nanmin(v) < 0 < np.nanmax(v) for _, _, v in series if np.isfinite(v).any()):
         ax.axhline(0, color="0.5", lw=0.6)
-    ax.set_xlabel("frequency ratio β = ω / ω1")
+    ax.set_xlabel(rep["x"]["label"])
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=12)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     png = rl.save_figure(fig, rep["plots_dir"], stem, svg=not rep["args"].no_svg, dpi=rep["args"].dpi)
-    return rl.figure_html(png, f"{title} vs β. File plots/{stem}.png (and .svg).", title)
+    return rl.figure_html(png, f"{title} vs {rep['x']['short']}. File plots/{stem}.png (and .svg).", title)
 
 
 def build(sweep_dir, args):
@@ -291,7 +322,10 @@ def build(sweep_dir, args):
     reference = {}
     if args.reference:
         reference = read_reference(args.reference)  # errors handled by main
-    beta = np.array([p.values.get("beta", math.nan) for p in points], dtype=float)
+    rep["x"] = abscissa(header, points)
+    beta = rep["x"]["values"]  # the curves' abscissa: beta, or a swept key
+    if rep["x"]["name"] != "beta":
+        reference = {}  # a reference curve is given against beta: it does not belong on these axes
     ok = np.array([(p.status in ("", "completed")) for p in points], dtype=bool)
     not_ok = [p for p in points if p.status not in ("", "completed")]
     if not_ok:
@@ -325,7 +359,7 @@ def build(sweep_dir, args):
                 if any(np.isfinite(v).any() for _, _, v in nseries):
                     html_norm.append(response_figure(rep, stem + "_normalised", f"{title}, normalised",
                                                      nseries, ylabel_n, ref_norm, beta, ok))
-        extra = [h for h in header if h not in KNOWN and h not in RUN_DIR_COLUMNS
+        extra = [h for h in header if h not in KNOWN and h not in RUN_DIR_COLUMNS and not h.startswith("set:")
                  and any(h in p.values for p in points)]
         for h in extra:
             series = [(h, h, np.array([p.values.get(h, math.nan) for p in points], dtype=float))]

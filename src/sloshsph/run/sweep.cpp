@@ -1,5 +1,6 @@
 #include "sloshsph/run/sweep.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -69,6 +70,21 @@ double number(const nlohmann::json& j, const char* key) {
   return it != j.end() && it->is_number() ? it->get<double>() : std::numeric_limits<double>::quiet_NaN();
 }
 
+// A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a line break.
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+// A TOML string value without its quotes ("ergun" -> ergun); other values as they are.
+std::string unquoted(const std::string& value) {
+  if (value.size() >= 2 && (value.front() == '"' || value.front() == '\'') && value.back() == value.front())
+    return value.substr(1, value.size() - 2);
+  return value;
+}
+
 }  // namespace
 
 std::vector<double> parse_beta_range(const std::string& text, const std::string& where) {
@@ -96,28 +112,156 @@ std::vector<double> parse_beta_range(const std::string& text, const std::string&
   return betas;
 }
 
-std::vector<SweepPoint> plan_sweep(const CaseSpec& spec, const std::vector<double>& betas,
-                                   const std::string& sweep_dir) {
+namespace {
+
+// "A:B:N" with numbers A, B and a whole N from 1 to 10000 -> N texts; otherwise nullopt.
+std::optional<std::vector<std::string>> numeric_range(const std::string& key, const std::string& value) {
+  const std::vector<std::string> parts = split(value, ':');
+  if (parts.size() != 3) return std::nullopt;
+  double ends[2];
+  for (int k = 0; k < 2; ++k) {
+    std::size_t used = 0;
+    try {
+      ends[k] = std::stod(parts[k], &used);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+    if (used != parts[k].size() || !std::isfinite(ends[k])) return std::nullopt;
+  }
+  std::size_t used = 0;
+  long n = 0;
+  try {
+    n = std::stol(parts[2], &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != parts[2].size() || n < 1 || n > 10000)
+    throw InputError("--set", key, "the point count N in A:B:N must be a whole number from 1 to 10000, got '" +
+                                       parts[2] + "'");
+  std::vector<std::string> values;
+  for (long k = 0; k < n; ++k)
+    values.push_back(format("%.10g", n == 1 ? ends[0]
+                                            : ends[0] + (ends[1] - ends[0]) * static_cast<double>(k) /
+                                                            static_cast<double>(n - 1)));
+  return values;
+}
+
+// The parts of "a,b,c" split at the commas outside [], {} and quotes (one part: not a list).
+std::vector<std::string> top_level_items(const std::string& value) {
+  std::vector<std::string> items(1);
+  int depth = 0;
+  char quote = 0;
+  for (char c : value) {
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    } else if (c == ',' && depth == 0) {
+      items.emplace_back();
+      continue;
+    }
+    items.back() += c;
+  }
+  for (std::string& item : items) {
+    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    item = first == std::string::npos ? "" : item.substr(first, last - first + 1);
+  }
+  return items;
+}
+
+// A file-name-safe form of a key or value for the point's directory name.
+std::string label_part(const std::string& text) {
+  std::string out;
+  for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+') ? c : '_';
+  return out.substr(0, 40);
+}
+
+}  // namespace
+
+SweepSets split_sweep_sets(const std::vector<std::string>& sets) {
+  SweepSets out;
+  for (const std::string& set : sets) {
+    const auto eq = set.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      out.fixed.push_back(set);  // the case reader reports the malformed --set
+      continue;
+    }
+    const std::string key = set.substr(0, eq), value = set.substr(eq + 1);
+    std::optional<std::vector<std::string>> values = numeric_range(key, value);
+    if (!values) {
+      std::vector<std::string> items = top_level_items(value);
+      if (items.size() > 1) values = std::move(items);
+    }
+    if (!values) {
+      out.fixed.push_back(set);
+      continue;
+    }
+    for (const std::string& v : *values)
+      if (v.empty()) throw InputError("--set", key, "an empty value in the list '" + value + "'");
+    for (const SweepAxis& a : out.axes)
+      if (a.key == key) throw InputError("--set", key, "swept twice; give one range or list per key");
+    out.axes.push_back({key, *values});
+  }
+  return out;
+}
+
+double excitation_beta(const CaseSpec& spec) {
   const ExcitationType type = spec.excitation.type;
-  if (type != ExcitationType::harmonic && type != ExcitationType::pitch)
-    throw InputError(spec.where("excitation.type"), "excitation.type",
-                     "a frequency sweep needs a harmonic or pitch excitation");
-  const double omega_ref = reference_omega(spec);
-  std::vector<SweepPoint> points;
-  for (double beta : betas) {
+  if (type != ExcitationType::harmonic && type != ExcitationType::pitch) return std::numeric_limits<double>::quiet_NaN();
+  return spec.excitation.omega / reference_omega(spec);
+}
+
+std::vector<SweepPoint> plan_sweep(const CaseSpec& spec, const std::vector<double>& betas,
+                                   const std::vector<SweepAxis>& axes, const std::string& sweep_dir) {
+  if (betas.empty() && axes.empty())
+    throw InputError("--beta", "--beta", "nothing to sweep: give --beta A:B:N, or a --set KEY=A:B:N or KEY=a,b,c");
+  std::vector<SweepPoint> frequencies;
+  if (betas.empty()) {
     SweepPoint p;
-    p.beta = beta;
-    p.label = format("beta_%.4f", beta);
-    p.directory = (fs::path(sweep_dir) / p.label).string();
-    // Set the key the case uses: a case may give only one of beta, frequency and omega.
-    if (spec.excitation.beta) p.override_text = "excitation.beta=" + format("%.17g", beta);
-    else if (spec.locations.count("excitation.omega"))
-      p.override_text = "excitation.omega=" + format("%.17g", beta * omega_ref);
-    else p.override_text = "excitation.frequency=" + format("%.17g", beta * omega_ref / (2.0 * std::numbers::pi));
-    for (const SweepPoint& q : points)
-      if (q.label == p.label)
-        throw InputError("--beta", "--beta", "two points round to the same ratio " + p.label + "; use fewer points");
-    points.push_back(p);
+    p.beta = std::numeric_limits<double>::quiet_NaN();
+    frequencies.push_back(p);
+  } else {
+    const ExcitationType type = spec.excitation.type;
+    if (type != ExcitationType::harmonic && type != ExcitationType::pitch)
+      throw InputError(spec.where("excitation.type"), "excitation.type",
+                       "a frequency sweep needs a harmonic or pitch excitation");
+    const double omega_ref = reference_omega(spec);
+    for (double beta : betas) {
+      SweepPoint p;
+      p.beta = beta;
+      p.label = format("beta_%.4f", beta);
+      // Set the key the case uses: a case may give only one of beta, frequency and omega.
+      if (spec.excitation.beta) p.overrides.push_back("excitation.beta=" + format("%.17g", beta));
+      else if (spec.locations.count("excitation.omega"))
+        p.overrides.push_back("excitation.omega=" + format("%.17g", beta * omega_ref));
+      else p.overrides.push_back("excitation.frequency=" + format("%.17g", beta * omega_ref / (2.0 * std::numbers::pi)));
+      frequencies.push_back(p);
+    }
+  }
+  // The Cartesian product: the first axis varies slowest, beta slowest of all.
+  std::vector<SweepPoint> points = frequencies;
+  for (const SweepAxis& axis : axes) {
+    std::vector<SweepPoint> next;
+    for (const SweepPoint& base : points)
+      for (const std::string& value : axis.values) {
+        SweepPoint p = base;
+        p.label += (p.label.empty() ? "" : "__") + label_part(axis.key) + "_" + label_part(value);
+        p.overrides.push_back(axis.key + "=" + value);
+        p.axis_values.push_back(value);
+        next.push_back(p);
+      }
+    points = std::move(next);
+  }
+  if (points.size() > 10000) throw InputError("--set", "", "more than 10000 sweep points; sweep fewer values");
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    points[k].directory = (fs::path(sweep_dir) / points[k].label).string();
+    for (std::size_t j = 0; j < k; ++j)
+      if (points[j].label == points[k].label)
+        throw InputError("--beta", "--beta", "two points have the same name " + points[k].label + "; use fewer points");
   }
   return points;
 }
@@ -128,12 +272,17 @@ std::string point_status(const std::string& directory) {
   return (*s)["status"].get<std::string>();
 }
 
-std::string frequency_response_csv(const CaseSpec& spec, const std::vector<SweepPoint>& points) {
+std::string frequency_response_csv(const CaseSpec& spec, const std::vector<SweepAxis>& axes,
+                                   const std::vector<SweepPoint>& points) {
   std::string out = "beta,omega,eta_max,eta_min,F_sw_max,F_sw_min,energy_per_cycle,status,normalised_energy,F_w_max,F_w_min";
   for (const GaugeSpec& g : spec.gauges) out += ",eta_max:" + g.name + ",eta_min:" + g.name;
+  for (const SweepAxis& a : axes) out += "," + csv_cell("set:" + a.key);
   out += ",wall_time_s,run_dir\n";
   const std::string first_gauge = spec.gauges.empty() ? "" : "eta:" + spec.gauges.front().name;
-  auto cell = [](double v) { return "," + format("%.9g", v); };
+  auto cell = [](double v) {
+    std::string c = ",";  // appended, not "," + ...: gcc 12 warns (-Wrestrict, falsely) on the temporary
+    return c += format("%.9g", v);
+  };
   for (const SweepPoint& p : points) {
     const nlohmann::json s = read_summary(p.directory).value_or(nlohmann::json::object());
     const std::string status = s.contains("status") && s["status"].is_string() ? s["status"].get<std::string>() : "missing";
@@ -148,6 +297,7 @@ std::string frequency_response_csv(const CaseSpec& spec, const std::vector<Sweep
     out += cell(steady(s, "F_w", "avg_max")) + cell(steady(s, "F_w", "avg_min"));
     for (const GaugeSpec& g : spec.gauges)
       out += cell(steady(s, "eta:" + g.name, "avg_max")) + cell(steady(s, "eta:" + g.name, "avg_min"));
+    for (const std::string& v : p.axis_values) out += "," + csv_cell(unquoted(v));
     out += cell(number(s, "wall_time_s")) + "," + p.label + "\n";
   }
   return out;

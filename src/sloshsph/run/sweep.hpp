@@ -1,7 +1,8 @@
 #pragma once
-// Frequency sweeps (`sloshsph sweep`): one run per frequency ratio beta, each in its own run
-// directory under the sweep directory, then one frequency_response.csv assembled from the
-// points' summary.json files. Process management lives in the command (app/cmd_sweep.cpp);
+// Sweeps (`sloshsph sweep`): one run per frequency ratio beta and per value of every ranged
+// --set (KEY=A:B:N or KEY=a,b,c: amplitude, depth, screen layout...), the Cartesian product of
+// them all, each in its own run directory under the sweep directory, then one
+// frequency_response.csv assembled from the points' summary.json files. Process management lives in the command (app/cmd_sweep.cpp);
 // this is the plan and the table.
 #include <optional>
 #include <string>
@@ -16,19 +17,39 @@ namespace sloshsph {
 // non-positive ratios or N < 1.
 std::vector<double> parse_beta_range(const std::string& text, const std::string& where = "--beta");
 
+// One swept key: `--set KEY=A:B:N` (N numbers from A to B) or `--set KEY=a,b,c` (the TOML values
+// as given, split at the commas outside brackets, braces and quotes).
+struct SweepAxis {
+  std::string key;
+  std::vector<std::string> values;  // TOML value texts
+};
+
+// The --set texts of a sweep, split into those that hold for every point and the ranged ones.
+struct SweepSets {
+  std::vector<std::string> fixed;
+  std::vector<SweepAxis> axes;
+};
+SweepSets split_sweep_sets(const std::vector<std::string>& sets);
+
 struct SweepPoint {
-  double beta = 0.0;
-  std::string label;                   // "beta_1.0100": the run directory's name
-  std::string override_text;           // the --set that gives this point its frequency
+  double beta = 0.0;                   // NaN until known when the sweep does not set it
+  std::string label;                   // "beta_1.0100", "beta_1.0000__fill.depth_0.12": the run directory's name
+  std::vector<std::string> overrides;  // the --set texts that make this point (frequency, then the axes)
+  std::vector<std::string> axis_values;  // the value of each axis at this point
   std::string directory;               // sweep_dir/label
 };
 
-// The points of a sweep of `spec` (read from its case file). The override sets the key the
-// case itself uses (excitation.beta, or excitation.frequency / omega computed from beta and
-// the reference frequency), so a case given in Hz sweeps without editing it. Throws
-// InputError unless the case has a harmonic or pitch excitation.
+// The points of a sweep of `spec` (read from its case file): every beta (none: the case's own
+// frequency) times every combination of the axes' values. The frequency override sets the key
+// the case itself uses (excitation.beta, or excitation.frequency / omega computed from beta and
+// the reference frequency), so a case given in Hz sweeps without editing it. Throws InputError
+// when betas are given and the case has no harmonic or pitch excitation, or when there is
+// nothing to sweep.
 std::vector<SweepPoint> plan_sweep(const CaseSpec& spec, const std::vector<double>& betas,
-                                   const std::string& sweep_dir);
+                                   const std::vector<SweepAxis>& axes, const std::string& sweep_dir);
+
+// The frequency ratio of a resolved case's harmonic or pitch excitation (NaN for other kinds).
+double excitation_beta(const CaseSpec& spec);
 
 // What a point's run directory says: "completed", "failed", "interrupted", or "" when it has no
 // readable summary.json (not run, or killed).
@@ -37,8 +58,10 @@ std::string point_status(const std::string& directory);
 // frequency_response.csv from the points' summary.json files. Fixed columns (users' scripts
 // rely on them): beta, omega, eta_max, eta_min, F_sw_max, F_sw_min, energy_per_cycle, status;
 // then normalised_energy, F_w_max, F_w_min, eta_max:<gauge>, eta_min:<gauge> for every gauge,
-// wall_time_s and run_dir. eta_* without a gauge name are those of the case's first gauge.
+// set:<key> for every axis of the sweep, wall_time_s and run_dir. eta_* without a gauge name are
+// those of the case's first gauge.
 // Missing numbers (a failed point, a case without gauges) are written as nan.
-std::string frequency_response_csv(const CaseSpec& spec, const std::vector<SweepPoint>& points);
+std::string frequency_response_csv(const CaseSpec& spec, const std::vector<SweepAxis>& axes,
+                                   const std::vector<SweepPoint>& points);
 
 }  // namespace sloshsph
