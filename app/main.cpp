@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "sloshsph: error: %s\n", e.what());
     return kExitBadInput;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "sloshsph: %s\n", e.what());
+    return kExitInterrupted;
   } catch (const RunFailure& e) {
     std::fprintf(stderr, "sloshsph: run failed: %s\n", e.what());
     return kExitRunFailed;

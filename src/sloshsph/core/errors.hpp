@@ -18,9 +18,16 @@ enum ExitCode : int {
 class InputError : public std::runtime_error {
  public:
   InputError(std::string where, std::string key, const std::string& what)
-      : std::runtime_error(format(where, key, what)), where_(std::move(where)), key_(std::move(key)) {}
+      : std::runtime_error(format(where, key, what)), where_(std::move(where)), key_(std::move(key)), message_(what) {}
   const std::string& where() const { return where_; }
   const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }
+  // The same error located more precisely: code that checks a value without knowing where it
+  // came from throws with an empty `where` (or only the file's name, `vague`), and the caller
+  // that has the case's key locations fills in "file:line".
+  InputError located(const std::string& where, const std::string& vague = "") const {
+    return where_.empty() || where_ == vague ? InputError(where, key_, message_) : *this;
+  }
 
  private:
   static std::string format(const std::string& where, const std::string& key, const std::string& what) {
@@ -30,12 +37,20 @@ class InputError : public std::runtime_error {
   }
   std::string where_;
   std::string key_;
+  std::string message_;
 };
 
 // The run failed after it started: non-finite values, too many leaked particles...
 class RunFailure : public std::runtime_error {
  public:
   explicit RunFailure(const std::string& what) : std::runtime_error(what) {}
+};
+
+// SIGINT/SIGTERM arrived before the run had anything to keep (while the fluid settled, before
+// the run directory exists): the command exits 4 and writes nothing.
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(const std::string& what) : std::runtime_error(what) {}
 };
 
 }  // namespace sloshsph

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <cstdio>
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
@@ -10,6 +11,7 @@
 #include "sloshsph/linear/modal.hpp"
 #include "sloshsph/linear/rectangular.hpp"
 #include "sloshsph/observe/probes.hpp"
+#include "sloshsph/run/run_case.hpp"
 #include "sloshsph/sph/kernel.hpp"
 
 namespace sloshsph {
@@ -38,7 +40,9 @@ CaseSpec resolve_case(CaseSpec spec) {
   return spec;
 }
 
-Simulation::Simulation(const CaseSpec& spec)
+// A function-try-block: the checks made while the scene and the excitation are built (fill
+// depth, screen geometry, noise band, ...) name their key; here they get the case file and line.
+Simulation::Simulation(const CaseSpec& spec) try
     : spec_(spec),
       scene_(build_scene(spec)),
       container_(*scene_.tank, 0.5 * spec.particles.dp, (spec.particles.wall_layers + 2) * spec.particles.dp),
@@ -61,6 +65,8 @@ Simulation::Simulation(const CaseSpec& spec)
     structure_->start(base_.at(0.0).acceleration.x);
   }
   build_columns();
+} catch (const InputError& e) {
+  throw e.located(spec.where(e.key()), spec.source);
 }
 
 // The plates' wall particles become moving walls. They settle with the fluid (time.settle): a
@@ -169,6 +175,14 @@ void Simulation::settle() {
       plate.damp(p, factor);
     }
     t += in.dt;
+    // A long settle (fine dp, seconds of settling) must not hold up SIGINT/SIGTERM: there is
+    // nothing to keep yet, so the command stops at once with exit code 4 (run_case.cpp).
+    if (stop_requested() && t < duration - 1e-12) {
+      char what[120];
+      std::snprintf(what, sizeof what, "interrupted while the fluid settled (%.3g of %.3g s); nothing was written", t,
+                    duration);
+      throw Interrupted(what);
+    }
   }
   for (PlateCoupling& plate : plates_) plate.restart();
   max_speed_ = 0.0;

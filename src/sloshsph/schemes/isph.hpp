@@ -61,14 +61,6 @@ class IsphScheme {
   double clip(double pressure) const;
   void mark_repulsive_layer(const Particles& p);
 
-  // scheme.repulsive_walls (thesis eq. 3.18): strength D = coefficient g max(H_w, h) of each
-  // wall particle (index w - n_fluid), 0 for those not in the first layer of the tank walls.
-  TankSpec tank_;
-  std::string tank_where_;
-  double still_depth_ = 0.0;  // fill depth above the lowest point
-  double gravity_ = 0.0;
-  std::vector<double> repulsion_strength_;
-
   SchemeSpec scheme_;
   KernelType kernel_type_;
   double h_;
@@ -79,6 +71,13 @@ class IsphScheme {
   double rho_ref_;  // kernel sum of a full lattice: the density of the undisturbed fluid
   double lambda_full_ = 0.0;  // sum of the Laplacian pair weights over a full lattice (air model)
   NeighbourList neighbours_;
+  // scheme.repulsive_walls (thesis eq. 3.18): strength D = coefficient g max(H_w, h) of each
+  // wall particle (index w - n_fluid), 0 for those not in the first layer of the tank walls.
+  TankSpec tank_;
+  std::string tank_where_;
+  double still_depth_ = 0.0;  // fill depth above the lowest point
+  double gravity_ = 0.0;
+  std::vector<double> repulsion_strength_;
   IsphData data_;
   StepDiagnostics diagnostics_;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
@@ -64,8 +65,27 @@ BandLimitedNoise band_limited_white_noise(const BandLimitedNoiseSpec& spec) {
   const auto k_lo = static_cast<long long>(std::max(1.0, std::ceil(spec.f_lo / df - 1e-9)));
   const auto k_hi = static_cast<long long>(std::floor(spec.f_hi / df + 1e-9));
   if (k_hi < k_lo) throw std::invalid_argument("white noise: the band holds no harmonic of 1/duration (duration too short)");
-  const auto n_comp = static_cast<std::size_t>(k_hi - k_lo + 1);
-  const auto n_samples = static_cast<std::size_t>(std::ceil(spec.duration / spec.dt - 1e-9)) + 1;
+  // Bounds before anything is allocated: a band reaching down to a tiny f_lo asks for a signal
+  // of duration 1/f_lo, a wide band for many components (the work is samples x components).
+  const double samples = std::ceil(spec.duration / spec.dt - 1e-9) + 1.0;
+  const double components = static_cast<double>(k_hi - k_lo + 1);
+  char why[240];
+  if (samples > kMaxNoiseSamples) {
+    std::snprintf(why, sizeof why,
+                  "white noise: %.3g samples needed (duration %.3g s at dt %.3g s: at least 1/f_low), more than the "
+                  "limit of %.3g; raise the low end of the band or shorten the run",
+                  samples, spec.duration, spec.dt, kMaxNoiseSamples);
+    throw std::invalid_argument(why);
+  }
+  if (samples * components > kMaxNoiseWork) {
+    std::snprintf(why, sizeof why,
+                  "white noise: %.3g components over %.3g samples is more than %.3g sample-components of work; "
+                  "narrow the band or shorten the run",
+                  components, samples, kMaxNoiseWork);
+    throw std::invalid_argument(why);
+  }
+  const auto n_comp = static_cast<std::size_t>(components);
+  const auto n_samples = static_cast<std::size_t>(samples);
 
   // The variance is S0 times the band actually covered, N df.
   const double rms = spec.psd_level > 0.0 ? std::sqrt(spec.psd_level * static_cast<double>(n_comp) * df) : spec.rms;

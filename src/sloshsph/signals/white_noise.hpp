@@ -9,6 +9,12 @@
 
 namespace sloshsph {
 
+// Limits of one generated noise signal (std::invalid_argument beyond them, before allocating):
+// 5e7 samples (400 MB; 5.8 days at dt = 0.01 s) and 2e11 sample-components (minutes of work; a
+// 10-hour run of the default 0.05-0.5 Hz band is 6e10).
+inline constexpr double kMaxNoiseSamples = 5e7;
+inline constexpr double kMaxNoiseWork = 2e11;
+
 struct BandLimitedNoiseSpec {
   std::uint64_t seed = 1;
   double f_lo = 0.05;        // Hz, lowest frequency of the band (thesis 4.4.2.1)
