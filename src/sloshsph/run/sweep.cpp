@@ -276,7 +276,7 @@ std::string frequency_response_csv(const CaseSpec& spec, const std::vector<Sweep
                                    const std::vector<SweepPoint>& points) {
   std::string out = "beta,omega,eta_max,eta_min,F_sw_max,F_sw_min,energy_per_cycle,status,normalised_energy,F_w_max,F_w_min";
   for (const GaugeSpec& g : spec.gauges) out += ",eta_max:" + g.name + ",eta_min:" + g.name;
-  for (const SweepAxis& a : axes) out += "," + csv_cell("set:" + a.key);
+  for (const SweepAxis& a : axes) (out += ',') += csv_cell("set:" + a.key);
   out += ",wall_time_s,run_dir\n";
   const std::string first_gauge = spec.gauges.empty() ? "" : "eta:" + spec.gauges.front().name;
   auto cell = [](double v) {
@@ -297,7 +297,7 @@ std::string frequency_response_csv(const CaseSpec& spec, const std::vector<Sweep
     out += cell(steady(s, "F_w", "avg_max")) + cell(steady(s, "F_w", "avg_min"));
     for (const GaugeSpec& g : spec.gauges)
       out += cell(steady(s, "eta:" + g.name, "avg_max")) + cell(steady(s, "eta:" + g.name, "avg_min"));
-    for (const std::string& v : p.axis_values) out += "," + csv_cell(unquoted(v));
+    for (const std::string& v : p.axis_values) (out += ',') += csv_cell(unquoted(v));
     out += cell(number(s, "wall_time_s")) + "," + p.label + "\n";
   }
   return out;
