@@ -98,6 +98,8 @@ def main():
         check(page.rstrip().endswith("The discussion, by hand.") and "<!-- header -->" not in page,
               "the notes follow the tables, without their header comment")
         first = json.load(open(os.path.join(docs, "validation", "results.json")))["tests"]["Fake.Fails"]
+        check(not [d for d in os.listdir(build) if d.startswith("validation-records")],
+              "the invocation's own records folder is removed (two invocations never share one)")
 
         code, log = run(build, docs, "--filter", "^Fake\\.Passes$")
         check(code == 0, f"only the passing test: exit code 0 (got {code})")

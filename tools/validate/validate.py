@@ -25,6 +25,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 import xml.etree.ElementTree as ET
 
 import matplotlib
@@ -353,12 +354,16 @@ def main():
         results = {n: e for n, e in results.items() if n in known}  # drop tests that no longer exist
         for n, label in known.items():
             results.setdefault(n, {"status": "not run"})["label"] = label
-        records = os.path.join(build_dir, "validation-records")
-        shutil.rmtree(records, ignore_errors=True)
-        os.makedirs(records)
-        outcome = run_tests(build_dir, labels, a.filter, a.jobs, records)
-        for n, o in outcome.items():
-            checks, curves = read_records(records, n)
+        # A folder of this invocation's own: two invocations on one build tree must not clear
+        # each other's records (a shared folder lost the records of the tests run before the
+        # other one started).
+        records = tempfile.mkdtemp(prefix="validation-records-", dir=build_dir)
+        try:
+            outcome = run_tests(build_dir, labels, a.filter, a.jobs, records)
+            ran = {n: (o, read_records(records, n)) for n, o in outcome.items()}
+        finally:
+            shutil.rmtree(records, ignore_errors=True)
+        for n, (o, (checks, curves)) in ran.items():
             for old in glob.glob(os.path.join(glob.escape(figures_dir), glob.escape(slug(n)) + ".*.png")):
                 os.remove(old)
             figures = []
