@@ -1,8 +1,9 @@
 // sloshsph sweep CASE [--beta A:B:N] [--jobs J] [--threads T] [--out DIR] [--set KEY=VALUE]...
 // One `sloshsph run` child process per point (frequency ratio times the values of every ranged
 // --set KEY=A:B:N or KEY=a,b,c), J at a time; each point keeps its run directory
-// (DIR/beta_X.XXXX, or with ranged sets DIR/beta_X.XXXX__KEY_VALUE..., and its .log). A failed point is reported and the
-// sweep goes on; re-running the same command skips the points already finished.
+// (DIR/beta_X.XXXX, or with ranged sets DIR/beta_X.XXXX__KEY_VALUE..., and its .log). A failed
+// point is reported and the sweep goes on; re-running the same command skips the points already
+// finished.
 #include <fcntl.h>
 #include <omp.h>
 #include <sys/wait.h>
