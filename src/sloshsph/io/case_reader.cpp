@@ -496,6 +496,21 @@ void check_structure_consistency(const CaseSpec& s) {
   }
 }
 
+// The particle count a case would need, bounded before anything is generated (a fine dp with
+// fill blocks made the reader lay out 1e18 lattice points: the mutation test's hang).
+void check_particle_estimate(const CaseSpec& s) {
+  const double dp = s.particles.dp;
+  const double estimate = (s.tank.length + 2.0 * s.particles.wall_layers * dp) *
+                          (s.tank.height + s.particles.wall_layers * dp) / (dp * dp);
+  if (estimate > 2.0e7) {
+    // Printed as a double: a huge tank gives an estimate beyond long long (or inf), and that
+    // conversion would be undefined behaviour.
+    std::ostringstream m;
+    m << "would need about " << std::setprecision(3) << estimate << " particles (limit 2e7 in 2D): is dp in metres?";
+    throw InputError(s.where("particles.dp"), "particles.dp", m.str());
+  }
+}
+
 // Fluid blocks: each inside the tank's extent, at least one particle across, below the wall
 // tops; the settled depth (when not given) from the blocks' area, the head from their tops.
 // The area counted is that of the lattice particles the blocks will hold (geometry/scene), so
@@ -503,6 +518,7 @@ void check_structure_consistency(const CaseSpec& s) {
 void resolve_fill(CaseSpec& s) {
   FillSpec& f = s.fill;
   if (f.blocks.empty()) return;
+  check_particle_estimate(s);
   const TankGeometry tank = make_tank(s.tank, s.where("tank.shape"));
   const double dp = s.particles.dp;
   const double top = std::min(tank.wall.front().y, tank.wall.back().y);
@@ -577,15 +593,7 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
                              std::to_string(s.fill.depth / dp) + ")");
   if (s.tank.length < 8.0 * dp)
     fail("particles.dp", "too coarse: the tank is fewer than 8 particles long");
-  const double estimate = (s.tank.length + 2.0 * s.particles.wall_layers * dp) *
-                          (s.tank.height + s.particles.wall_layers * dp) / (dp * dp);
-  if (estimate > 2.0e7) {
-    // Printed as a double: a huge tank gives an estimate beyond long long (or inf), and that
-    // conversion would be undefined behaviour.
-    std::ostringstream m;
-    m << "would need about " << std::setprecision(3) << estimate << " particles (limit 2e7 in 2D): is dp in metres?";
-    fail("particles.dp", m.str());
-  }
+  check_particle_estimate(s);
   // Hard stability bound on a fixed step: CFL 0.4 on the gravity-wave speed plus the
   // base velocity, and the viscous bound 0.125 dp^2 / nu. The thesis's own bound
   // (0.1 dp / u_max, section 2.6.3.2) is the adaptive step's; see docs/case-format.md.

@@ -67,7 +67,9 @@ TEST(PlateLayout, StandingPlateTilesItsRectangleAndCoversEachFaceOnce) {
     EXPECT_GT(r.y, 0.0);
     EXPECT_LT(r.y, h);
     EXPECT_NEAR(norm(l.walls[k].normal), 1.0, 1e-12);
-    if (l.side_face[k].length > 0.0) EXPECT_NEAR(l.side_face[k].distance, 0.75e-3, 1e-12);
+    if (l.side_face[k].length > 0.0) {
+      EXPECT_NEAR(l.side_face[k].distance, 0.75e-3, 1e-12);
+    }
   }
   const FaceSums f = sum_faces(l);
   EXPECT_NEAR(f.left, h, 1e-12);  // each long face is covered exactly once
