@@ -109,7 +109,10 @@ def check_page(exe, path, shots):
         if v["scroll-width"] > v["inner-width"]:
             problems.append(f"the page is {v['scroll-width']} px wide in a {v['inner-width']} px window")
         height = min(max(v.get("height", 900), 900), 16000)
-    shot = os.path.join(shots, os.path.basename(os.path.dirname(os.path.abspath(path))) + ".png")
+    # report.html is named after its run directory; any other page after itself.
+    stem = os.path.splitext(os.path.basename(path))[0]
+    name = os.path.basename(os.path.dirname(os.path.abspath(path))) if stem == "report" else stem
+    shot = os.path.join(shots, name + ".png")
     out = browser(exe, [f"--window-size={WIDTH},{height}", f"--screenshot={shot}"], "file://" + os.path.abspath(path))
     if out.returncode != 0 or not os.path.exists(shot):
         return problems + [f"chromium --screenshot failed ({out.returncode}): {out.stderr[-300:]}"]
