@@ -119,18 +119,9 @@ TEST(ValidationLong, DamBreakFrontMartinMoyce) {
                                   .tolerance = NAN,
                                   .source = source + " (the time origin of the release is not stated)",
                                   .asserted = false});
-    std::vector<double> t, x, data_t, data_x;
-    for (const testing::Sample& s : run) {
-      t.push_back(s.t);
-      x.push_back(s.x);
-    }
-    for (const testing::Sample& d : nondimensional) {
-      data_t.push_back(d.t);
-      data_x.push_back(d.x);
-    }
-    testing::record_curve({"front_" + scheme, "Dam-break surge front, " + label + ", a = 1 m, dp = 20 mm", "time (s)",
-                           "front position x (m) = x/a", t, x,
-                           "Martin & Moyce (1952), experiment, T = t sqrt(g / a)", data_t, data_x});
+    testing::record_front_curve("front_" + scheme, "Dam-break surge front, " + label + ", a = 1 m, dp = 20 mm",
+                                "front position x (m) = x/a", run, nondimensional,
+                                "Martin & Moyce (1952), experiment, T = t sqrt(g / a)");
   }
 }
 

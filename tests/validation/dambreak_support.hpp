@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "validation_check.hpp"
+
 namespace sloshsph::testing {
 
 struct Sample {
@@ -67,6 +69,22 @@ inline Shift best_shift(const std::vector<Sample>& run, const std::vector<Sample
     if (r < best.rms) best = {s, r};
   }
   return best;
+}
+
+// The simulated front beside the experiment's points, as a comparison curve (record_curve).
+inline void record_front_curve(const std::string& name, const std::string& title, const std::string& y_label,
+                               const std::vector<Sample>& run, const std::vector<Sample>& data,
+                               const std::string& data_label) {
+  Curve c{name, title, "time (s)", y_label, {}, {}, data_label, {}, {}};
+  for (const Sample& s : run) {
+    c.x.push_back(s.t);
+    c.measured.push_back(s.x);
+  }
+  for (const Sample& d : data) {
+    c.reference_x.push_back(d.t);
+    c.reference_y.push_back(d.x);
+  }
+  record_curve(c);
 }
 
 }  // namespace sloshsph::testing

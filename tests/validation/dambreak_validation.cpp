@@ -90,17 +90,8 @@ TEST(Validation, DamBreakFrontKoshizukaOka) {
     report("dambreak_koshizuka_" + name + "_front_speed_ratio", speed / speed_data);
     check_relative("mean front speed between 0.322 s and 0.594 s, unshifted, " + label, speed, speed_data, 0.05,
                    kFrontData + ": the data points at 0.322 s and 0.594 s", "m/s");
-    std::vector<double> t, x, data_t, data_x;
-    for (const testing::Sample& s : *run) {
-      t.push_back(s.t);
-      x.push_back(s.x);
-    }
-    for (const testing::Sample& d : data) {
-      data_t.push_back(d.t);
-      data_x.push_back(d.x);
-    }
-    testing::record_curve({"front_" + name, "Dam-break surge front, " + label + ", dp = 20 mm", "time (s)",
-                           "front position x (m)", t, x, "Koshizuka & Oka (1996), experiment", data_t, data_x});
+    testing::record_front_curve("front_" + name, "Dam-break surge front, " + label + ", dp = 20 mm",
+                                "front position x (m)", *run, data, "Koshizuka & Oka (1996), experiment");
   }
   double sum = 0.0;
   int n = 0;

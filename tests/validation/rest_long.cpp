@@ -20,7 +20,7 @@ TEST(Long, HydrostaticTankThesisResolution) {
   const double rho = 1000.0, g = 9.81, H = 0.25;
   const auto r = run_case_in_memory("hydrostatic.toml", {});
   double worst = 0.0;
-  std::vector<double> heights, pressures, hydrostatic;
+  std::vector<testing::ProfilePoint> profile;
   for (const auto& [name, values] : r.series) {
     if (name.rfind("p:y", 0) != 0) continue;
     const double y = std::stod(name.substr(3));
@@ -30,14 +30,12 @@ TEST(Long, HydrostaticTankThesisResolution) {
     check_absolute("pressure at y = " + name.substr(3) + " m, at 15 s, dp = 5 mm", values.back(), rho * g * (H - y),
                    0.01 * (rho * g * H), "hydrostatics rho g (H - y), H = 0.25 m (thesis 2.6.1); tolerance 1% of rho g H",
                    "Pa");
-    heights.push_back(y);
-    pressures.push_back(values.back());
-    hydrostatic.push_back(rho * g * (H - y));
+    profile.push_back({y, values.back(), rho * g * (H - y)});
   }
   report("hydrostatic_5mm_worst_probe_error_fraction", worst);
   report("hydrostatic_5mm_max_speed_m_s", r.max_speed_end);
-  testing::record_curve({"pressure_profile", "Tank at rest, pressure probes at 15 s (dp = 5 mm)", "height y (m)",
-                         "pressure (Pa)", heights, pressures, "hydrostatic rho g (H - y)", heights, hydrostatic, false});
+  testing::record_profile_curve("Tank at rest, pressure probes at 15 s (dp = 5 mm)", profile,
+                                "hydrostatic rho g (H - y)");
   check_at_most("particles leaked from the tank", static_cast<double>(r.leaked), 0.0, "none may leave");
 }
 

@@ -26,7 +26,7 @@ TEST(Validation, HydrostaticTank) {
                                     [&](const Simulation& s) { wall_particles = double(s.particles().n_wall()); });
   const double scale = rho * g * H;
   double worst = 0.0;
-  std::vector<double> heights, pressures, hydrostatic;
+  std::vector<testing::ProfilePoint> profile;
   for (const auto& [name, values] : r.series) {
     if (name.rfind("p:y", 0) != 0) continue;
     const double y = std::stod(name.substr(3));
@@ -36,13 +36,11 @@ TEST(Validation, HydrostaticTank) {
     // |p - rho g (H - y)| / (rho g H) < 2%, i.e. within 0.02 rho g H of the hydrostatic value.
     check_absolute("pressure at y = " + name.substr(3) + " m, at 5 s", values.back(), expected, 0.02 * scale,
                    "hydrostatics rho g (H - y), H = 0.25 m; tolerance 2% of rho g H", "Pa");
-    heights.push_back(y);
-    pressures.push_back(values.back());
-    hydrostatic.push_back(expected);
+    profile.push_back({y, values.back(), expected});
   }
   report("hydrostatic_worst_probe_error_fraction_of_rho_g_H", worst);
-  testing::record_curve({"pressure_profile", "Tank at rest, pressure probes at 5 s (dp = 10 mm)", "height y (m)",
-                         "pressure (Pa)", heights, pressures, "hydrostatic rho g (H - y)", heights, hydrostatic, false});
+  testing::record_profile_curve("Tank at rest, pressure probes at 5 s (dp = 10 mm)", profile,
+                                "hydrostatic rho g (H - y)");
   check_at_most("particles leaked from the tank", static_cast<double>(r.leaked), 0.0, "none may leave");
   const double limit = 0.01 * std::sqrt(g * H);
   report("hydrostatic_max_speed_m_s", r.max_speed_end);

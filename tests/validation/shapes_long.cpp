@@ -9,7 +9,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "run_support.hpp"
@@ -58,7 +57,7 @@ void check_circular_rest(const std::string& label, const std::vector<std::string
   report(label + "_leaked", double(r.leaked));
   report(label + "_mass_equivalent_depth_m", level);
   double worst = 0.0, worst_nominal = 0.0;
-  std::vector<std::tuple<double, double, double>> profile;  // y, p, hydrostatic p
+  std::vector<testing::ProfilePoint> profile;
   for (const auto& [name, values] : r.series) {
     if (name.rfind("p:", 0) != 0) continue;
     const double y = std::stod(name.substr(name.rfind('y') + 1));
@@ -73,16 +72,8 @@ void check_circular_rest(const std::string& label, const std::vector<std::string
                    "Pa");
     profile.push_back({y, values.back(), rho * g * (level - y)});
   }
-  std::sort(profile.begin(), profile.end());
-  std::vector<double> heights, pressures, hydrostatic;
-  for (const auto& [y, p, expected] : profile) {
-    heights.push_back(y);
-    pressures.push_back(p);
-    hydrostatic.push_back(expected);
-  }
-  testing::record_curve({"pressure_profile", "Circular tank at rest, pressure probes at 200 s (dp = 5 mm), " + label,
-                         "height y (m)", "pressure (Pa)", heights, pressures, "hydrostatic rho g (H_eff - y)", heights,
-                         hydrostatic, false});
+  testing::record_profile_curve("Circular tank at rest, pressure probes at 200 s (dp = 5 mm), " + label, profile,
+                                "hydrostatic rho g (H_eff - y)");
   report(label + "_worst_probe_error_fraction_of_rho_g_Heff", worst);
   report(label + "_worst_probe_error_vs_requested_depth", worst_nominal);
   report(label + "_max_speed_m_s", r.max_speed_end);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "run_support.hpp"
@@ -60,7 +59,7 @@ TEST(Validation, CircularTankAtRest) {
   report("circular_rest_mass_equivalent_depth_m", level);
   const double scale = rho * g * level;
   double worst = 0.0, worst_nominal = 0.0;
-  std::vector<std::tuple<double, double, double>> profile;  // y, p, hydrostatic p
+  std::vector<testing::ProfilePoint> profile;
   for (const auto& [name, values] : r.series) {
     if (name.rfind("p:", 0) != 0) continue;
     const double y = std::stod(name.substr(name.rfind('y') + 1));
@@ -74,16 +73,8 @@ TEST(Validation, CircularTankAtRest) {
                    "Pa");
     profile.push_back({y, values.back(), rho * g * (level - y)});
   }
-  std::sort(profile.begin(), profile.end());
-  std::vector<double> heights, pressures, hydrostatic;
-  for (const auto& [y, p, expected] : profile) {
-    heights.push_back(y);
-    pressures.push_back(p);
-    hydrostatic.push_back(expected);
-  }
-  testing::record_curve({"pressure_profile", "Circular tank at rest, pressure probes at 20 s (dp = 10 mm)", "height y (m)",
-                         "pressure (Pa)", heights, pressures, "hydrostatic rho g (H_eff - y)", heights, hydrostatic,
-                         false});
+  testing::record_profile_curve("Circular tank at rest, pressure probes at 20 s (dp = 10 mm)", profile,
+                                "hydrostatic rho g (H_eff - y)");
   report("circular_rest_worst_probe_error_fraction_of_rho_g_Heff", worst);
   // For the record: against the requested depth the error is the level deficit (not tested).
   report("circular_rest_worst_probe_error_vs_requested_depth", worst_nominal);

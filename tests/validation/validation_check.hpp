@@ -17,6 +17,7 @@
 // number the issue sets a bar for that we knowingly miss and explain (the table says so).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -190,6 +191,27 @@ inline void record_curve(const Curve& c) {
       << ", \"measured\": " << array(c.measured) << ", \"reference_label\": " << detail::json_string(c.reference_label)
       << ", \"reference_x\": " << array(c.reference_x) << ", \"reference_y\": " << array(c.reference_y)
       << ", \"reference_as_points\": " << (c.reference_as_points ? "true" : "false") << "}\n";
+}
+
+// A pressure probe's final value beside its hydrostatic one; record_profile_curve sorts them by
+// height into the comparison curve "pressure_profile".
+struct ProfilePoint {
+  double y = 0.0;          // m
+  double measured = 0.0;   // Pa
+  double reference = 0.0;  // Pa
+};
+
+inline void record_profile_curve(const std::string& title, std::vector<ProfilePoint> points,
+                                 const std::string& reference_label) {
+  std::sort(points.begin(), points.end(), [](const ProfilePoint& a, const ProfilePoint& b) { return a.y < b.y; });
+  Curve c{"pressure_profile", title, "height y (m)", "pressure (Pa)", {}, {}, reference_label, {}, {}, false};
+  for (const ProfilePoint& p : points) {
+    c.x.push_back(p.y);
+    c.measured.push_back(p.measured);
+    c.reference_x.push_back(p.y);
+    c.reference_y.push_back(p.reference);
+  }
+  record_curve(c);
 }
 
 }  // namespace sloshsph::testing
