@@ -85,26 +85,36 @@ std::string unquoted(const std::string& value) {
   return value;
 }
 
+// N of "A:B:N": a whole number from 1 to 10000; InputError(where, key) otherwise.
+long point_count(const std::string& text, const std::string& where, const std::string& key) {
+  std::size_t used = 0;
+  long n = 0;
+  try {
+    n = std::stol(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || n < 1 || n > 10000)
+    throw InputError(where, key,
+                     "the point count N in A:B:N must be a whole number from 1 to 10000, got '" + text + "'");
+  return n;
+}
+
+// N values from a to b inclusive, evenly spaced (a alone for N = 1).
+std::vector<double> evenly_spaced(double a, double b, long n) {
+  if (n == 1) return {a};
+  std::vector<double> values;
+  for (long k = 0; k < n; ++k) values.push_back(a + (b - a) * static_cast<double>(k) / static_cast<double>(n - 1));
+  return values;
+}
+
 }  // namespace
 
 std::vector<double> parse_beta_range(const std::string& text, const std::string& where) {
   const std::vector<std::string> range = split(text, ':');
   if (range.size() == 3) {
     const double a = parse_ratio(range[0], where), b = parse_ratio(range[1], where);
-    std::size_t used = 0;
-    long n = 0;
-    try {
-      n = std::stol(range[2], &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != range[2].size() || n < 1 || n > 10000)
-      throw InputError(where, "--beta", "the point count N in A:B:N must be a whole number from 1 to 10000, got '" +
-                                            range[2] + "'");
-    if (n == 1) return {a};
-    std::vector<double> betas;
-    for (long k = 0; k < n; ++k) betas.push_back(a + (b - a) * static_cast<double>(k) / static_cast<double>(n - 1));
-    return betas;
+    return evenly_spaced(a, b, point_count(range[2], where, "--beta"));
   }
   if (range.size() != 1) throw InputError(where, "--beta", "expected A:B:N, a list a,b,c, or one number, got '" + text + "'");
   std::vector<double> betas;
@@ -128,21 +138,9 @@ std::optional<std::vector<std::string>> numeric_range(const std::string& key, co
     }
     if (used != parts[k].size() || !std::isfinite(ends[k])) return std::nullopt;
   }
-  std::size_t used = 0;
-  long n = 0;
-  try {
-    n = std::stol(parts[2], &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != parts[2].size() || n < 1 || n > 10000)
-    throw InputError("--set", key, "the point count N in A:B:N must be a whole number from 1 to 10000, got '" +
-                                       parts[2] + "'");
   std::vector<std::string> values;
-  for (long k = 0; k < n; ++k)
-    values.push_back(format("%.10g", n == 1 ? ends[0]
-                                            : ends[0] + (ends[1] - ends[0]) * static_cast<double>(k) /
-                                                            static_cast<double>(n - 1)));
+  for (double v : evenly_spaced(ends[0], ends[1], point_count(parts[2], "--set", key)))
+    values.push_back(format("%.10g", v));
   return values;
 }
 
