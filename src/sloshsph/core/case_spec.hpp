@@ -110,6 +110,8 @@ struct SchemeSpec {
   bool repulsive_walls = false;
   double repulsive_coefficient = 1.0;    // D = coefficient g H_w
   double repulsive_range = 0.5;          // r0 / h (eq. 3.18: h_k / 2)
+  // Both schemes: stop fluid particles at the tank walls (physics/wall_contact.hpp).
+  bool wall_contact = true;
   WcsphSpec wcsph;                       // used when type = "wcsph"
 };
 

@@ -140,6 +140,7 @@ SchemeSpec read_scheme(TableReader& r) {
   if (s.type == "isph") read_isph_keys(r, s);
   else read_wcsph_keys(r, s);
   s.neighbour_skin = r.in_range("neighbour_skin", s.neighbour_skin, 0.0, 1.0);
+  s.wall_contact = r.boolean("wall_contact", s.wall_contact);
   r.finish();
   return s;
 }
@@ -734,7 +735,7 @@ snapshot_interval = 0.1
 }
 
 static toml::table scheme_table(const SchemeSpec& x) {
-  toml::table t{{"type", x.type}, {"neighbour_skin", x.neighbour_skin}};
+  toml::table t{{"type", x.type}, {"neighbour_skin", x.neighbour_skin}, {"wall_contact", x.wall_contact}};
   if (x.type == "isph") {
     t.insert("alpha", x.alpha);
     t.insert("pressure", x.pressure == PressureSolve::implicit_krylov ? "implicit" : "explicit");

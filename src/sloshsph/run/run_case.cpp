@@ -343,6 +343,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["fluid_particles"] = sim.scene().initial_fluid_count;
   s["wall_particles"] = p.n_wall();
   s["leaked_particles"] = sim.leaked();
+  s["wall_contacts"] = sim.wall_contacts();
   s["particle_steps_per_second"] = wall > 0 ? total_particles * sim.steps() / wall : 0.0;
   s["fluid_particle_steps_per_second"] =
       wall > 0 ? static_cast<double>(sim.scene().initial_fluid_count) * sim.steps() / wall : 0.0;

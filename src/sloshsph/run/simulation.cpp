@@ -11,6 +11,7 @@
 #include "sloshsph/linear/modal.hpp"
 #include "sloshsph/linear/rectangular.hpp"
 #include "sloshsph/observe/probes.hpp"
+#include "sloshsph/physics/wall_contact.hpp"
 #include "sloshsph/run/run_case.hpp"
 #include "sloshsph/sph/kernel.hpp"
 
@@ -45,7 +46,7 @@ CaseSpec resolve_case(CaseSpec spec) {
 Simulation::Simulation(const CaseSpec& spec) try
     : spec_(spec),
       scene_(build_scene(spec)),
-      container_(*scene_.tank, 0.5 * spec.particles.dp, (spec.particles.wall_layers + 2) * spec.particles.dp),
+      container_(*scene_.tank, container_grid(), (spec.particles.wall_layers + 2) * spec.particles.dp),
       base_(spec.excitation, spec.time.end),
       scheme_(spec, scene_.h),
       screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)) {
@@ -125,7 +126,8 @@ void Simulation::build_columns() {
                                    {"leaked", "1"},
                                    {"max_speed", "m/s"},
                                    {"dt", "s"},
-                                   {"ppe_iterations", "1"}});
+                                   {"ppe_iterations", "1"},
+                                   {"wall_contacts", "1"}});
   for (const auto& pl : plates_) {
     const std::string& n = pl.spec().name;
     columns_.insert(columns_.end(), {{"plate_dx:" + n, "m"},
@@ -247,6 +249,12 @@ void Simulation::step() {
   }
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
   Vec2 wall_force = scheme_.diagnostics().wall_force;
+  if (spec_.scheme.wall_contact) {
+    const WallContact contact =
+        keep_fluid_in_tank(scene_.particles, container_, *scene_.tank, spec_.particles.dp, container_grid(), dt);
+    wall_contacts_ += contact.corrected;
+    wall_force += contact.force_on_fluid;
+  }
   for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
     wall_force += screen_loads_[e].force_on_fluid;
     acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
@@ -382,7 +390,8 @@ std::vector<double> Simulation::sample() {
   }
   v.insert(v.end(), {f_w.x, f_w.x - mass * a_mean, f_w.y, work_on_fluid_, mass, e_kin, e_pot,
                      static_cast<double>(leaks_.size()), max_speed_, last_dt_,
-                     static_cast<double>(scheme_.diagnostics().solver_iterations)});
+                     static_cast<double>(scheme_.diagnostics().solver_iterations),
+                     static_cast<double>(wall_contacts_)});
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     PlateCoupling& pl = plates_[k];
     const Vec2 tip = pl.tip_displacement(), mid = pl.displacement_at(0.5);
@@ -450,6 +459,7 @@ void Simulation::save_state(StateWriter& w) const {
   w.value("sim.max_speed", max_speed_);
   w.array("sim.gauge_datum", gauge_datum_);
   w.array("sim.leaks", leaks_);
+  w.value("sim.wall_contacts", static_cast<std::uint64_t>(wall_contacts_));
   w.value("sim.acc_dt", acc_dt_);
   w.value("sim.acc_wall_force", acc_wall_force_);
   w.value("sim.acc_base_acceleration", acc_base_acceleration_);
@@ -474,6 +484,7 @@ void Simulation::load_state(StateReader& r) {
   max_speed_ = r.value<double>("sim.max_speed");
   gauge_datum_ = r.array<double>("sim.gauge_datum");
   leaks_ = r.array<LeakRecord>("sim.leaks");
+  wall_contacts_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.wall_contacts"));
   acc_dt_ = r.value<double>("sim.acc_dt");
   acc_wall_force_ = r.value<Vec2>("sim.acc_wall_force");
   acc_base_acceleration_ = r.value<double>("sim.acc_base_acceleration");

@@ -73,6 +73,8 @@ class Simulation {
   const std::vector<PlateCoupling>& plates() const { return plates_; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
   std::size_t leaked() const { return leaks_.size(); }
+  // Fluid particles stopped at the tank walls since t = 0 (scheme.wall_contact).
+  std::size_t wall_contacts() const { return wall_contacts_; }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
   double max_speed() const { return max_speed_; }
   double linear_omega() const { return linear_omega_; }  // first_sloshing_omega of the case
@@ -91,6 +93,8 @@ class Simulation {
   void settle();
   void check_state();
   void remove_leaked();
+  // Spacing of the sampled container distance (leak test, first wall-contact test), m.
+  double container_grid() const { return 0.5 * spec_.particles.dp; }
   void start_plates();
   void advance_plates(double dt, const FrameForce& frame);
   void build_columns();
@@ -116,6 +120,7 @@ class Simulation {
   double c_full_ = 1.0;                  // kernel sum sum_j V W of undisturbed fluid
   std::vector<double> gauge_datum_;      // surface height of each gauge at t = 0
   std::vector<LeakRecord> leaks_;
+  std::size_t wall_contacts_ = 0;
   std::vector<Column> columns_;
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;
