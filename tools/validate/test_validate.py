@@ -12,6 +12,8 @@ run without --long. Checked:
   the long test as not run, the curve's plot, and the notes below the tables;
 - a second invocation that runs only Fake.Passes keeps Fake.Fails's earlier result, with the
   commit and date it came from;
+- an invocation keeps what another one wrote into results.json while it ran (`Fake.Meanwhile`,
+  when the marker file exists, writes a result for FakeLong.NotRun as a parallel invocation would);
 - `--no-run` rewrites the page from results.json alone.
 """
 import json
@@ -38,7 +40,15 @@ def record(name, rows):
     return f"printf '{lines}\\n' > \"$SLOSHSPH_VALIDATION_RECORD/{name}.jsonl\""
 
 
-def make_build_tree(build):
+def meanwhile(docs, marker):
+    """A shell command that, if `marker` exists, stores a result for FakeLong.NotRun in results.json."""
+    script = (f"import json; p = {os.path.join(docs, 'validation', 'results.json')!r}; d = json.load(open(p)); "
+              "d['tests']['FakeLong.NotRun'] = dict(label='long', status='passed', seconds=7.0, commit='abc', "
+              "date='elsewhere', checks=[], figures=[]); json.dump(d, open(p, 'w'))")
+    return f"if [ -f {marker} ]; then {PY} -c \"{script}\"; fi"
+
+
+def make_build_tree(build, docs, marker):
     os.makedirs(build)
     passing = [
         dict(quantity="pressure at the floor", unit="Pa", measured=2456.0, kind="relative", reference=2452.5,
@@ -61,6 +71,7 @@ def make_build_tree(build):
         ("Fake.Passes", "validation", record("Fake.Passes", passing) + " && " + curve_cmd),
         ("Fake.Fails", "validation", record("Fake.Fails", failing) + " && exit 1"),
         ("FakeLong.NotRun", "long", "exit 1"),
+        ("Fake.Meanwhile", "validation", meanwhile(docs, marker)),
     ]
     with open(os.path.join(build, "CTestTestfile.cmake"), "w") as f:
         for name, label, command in tests:
@@ -78,7 +89,8 @@ def run(build, docs, *extra):
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         build, docs = os.path.join(tmp, "build"), os.path.join(tmp, "docs")
-        make_build_tree(build)
+        marker = os.path.join(tmp, "write-meanwhile")
+        make_build_tree(build, docs, marker)
         os.makedirs(os.path.join(docs, "validation"))
         with open(os.path.join(docs, "validation", "notes.md"), "w") as f:
             f.write("<!-- header -->\nThe discussion, by hand.\n")
@@ -86,7 +98,7 @@ def main():
         code, log = run(build, docs)
         check(code == 3, f"a failing test gives exit code 3 (got {code})")
         page = open(os.path.join(docs, "validation.md")).read()
-        check("2 of 3 tests have results: 1 passed, 1 failed" in page, "summary counts the tests")
+        check("3 of 4 tests have results: 2 passed, 1 failed" in page, "summary counts the tests")
         check("| pressure at the floor | 2452 Pa (hydrostatics) | ± 2 % | 2456 Pa (+0.14 %) | pass |" in page,
               "a relative check's row: reference, tolerance, measured with its deviation, verdict")
         check("| front RMS error | Koshizuka and Oka | ≤ 0.05 m | 0.2800 m | **FAIL** |" in page, "a failed check")
@@ -107,6 +119,13 @@ def main():
         check(kept == first, "a test that did not run keeps its earlier result, commit and date")
         page = open(os.path.join(docs, "validation.md")).read()
         check("1 test ran" in page and "**failed**" in page, "the page says what ran and still shows the old failure")
+
+        open(marker, "w").close()
+        code, log = run(build, docs, "--filter", "^Fake\\.Meanwhile$")
+        stored = json.load(open(os.path.join(docs, "validation", "results.json")))["tests"]
+        check(code == 0 and stored["FakeLong.NotRun"].get("date") == "elsewhere"
+              and stored["Fake.Meanwhile"]["status"] == "passed",
+              "a result written by another invocation during the run is kept beside this run's")
 
         os.remove(os.path.join(docs, "validation.md"))
         code, log = run(build, docs, "--no-run")

@@ -322,6 +322,15 @@ def write_page(path, results, run_info, notes_text, figures_rel, summary_plot):
 
 # --------------------------------------------------------------------------------------------
 
+def load_stored(results_path):
+    """The stored results and the last invocation's description (empty if there are none)."""
+    if not os.path.exists(results_path):
+        return {}, ""
+    with open(results_path) as f:
+        stored = json.load(f)
+    return stored.get("tests", {}), stored.get("last_invocation", "")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--build-dir", required=True)
@@ -338,11 +347,7 @@ def main():
     figures_dir = os.path.join(a.docs, FIGURES)
     os.makedirs(figures_dir, exist_ok=True)
     results_path = os.path.join(a.docs, RESULTS)
-    results, last_invocation = {}, ""
-    if os.path.exists(results_path):
-        with open(results_path) as f:
-            stored = json.load(f)
-        results, last_invocation = stored.get("tests", {}), stored.get("last_invocation", "")
+    results, last_invocation = load_stored(results_path)
 
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     revision = git_revision(a.source_dir)
@@ -354,9 +359,6 @@ def main():
         known = list_tests(build_dir, ["validation", "long", "unit-theory"])
         if not known:
             fail_usage(f"{build_dir}: no tests labelled validation or long (was the project built with its tests?)")
-        results = {n: e for n, e in results.items() if n in known}  # drop tests that no longer exist
-        for n, label in known.items():
-            results.setdefault(n, {"status": "not run"})["label"] = label
         # A folder of this invocation's own: two invocations on one build tree must not clear
         # each other's records (a shared folder lost the records of the tests run before the
         # other one started).
@@ -366,6 +368,12 @@ def main():
             ran = {n: (o, read_records(records, n)) for n, o in outcome.items()}
         finally:
             shutil.rmtree(records, ignore_errors=True)
+        # Read again after the run (hours, with --long): another invocation on other tests may
+        # have written its results meanwhile, and they are kept.
+        results, last_invocation = load_stored(results_path)
+        results = {n: e for n, e in results.items() if n in known}  # drop tests that no longer exist
+        for n, label in known.items():
+            results.setdefault(n, {"status": "not run"})["label"] = label
         for n, (o, (checks, curves)) in ran.items():
             for old in glob.glob(os.path.join(glob.escape(figures_dir), glob.escape(slug(n)) + ".*.png")):
                 os.remove(old)
