@@ -33,7 +33,7 @@ Command add_validate_command(CLI::App& app) {
   sub->add_option("--filter", o->filter, "Only the tests whose name matches this regular expression (ctest -R)");
   sub->add_option("--jobs", o->jobs,
                   "Tests run at once; each uses OMP_NUM_THREADS threads (on 2 cores, OMP_NUM_THREADS=1 with --jobs 2 "
-                  "is the fastest: 18 minutes for the validation label)")
+                  "is the fastest: about 13 minutes for the validation label)")
       ->check(CLI::Range(1, 64));
   sub->add_flag("--no-run", o->no_run, "Do not run tests: regenerate the page from docs/validation/results.json");
   return {sub, [o]() {
