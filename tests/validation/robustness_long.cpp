@@ -1,7 +1,7 @@
-// One hour of resonant sloshing in the Tait et al. (2005) tank with its two
-// Ergun screens (label `long`; the long-run robustness check of the thesis's
-// warning, 1.3.5, that its predecessor code lost particles through the walls
-// near the end of long runs).
+// Hour-long runs (label `long`): the long-run robustness checks against the thesis's warning
+// (1.3.5) that its predecessor code lost particles through the walls near the end of long runs.
+// One hour of resonant sloshing in the Tait et al. (2005) tank with its two Ergun screens, and
+// one hour of the circular tank at rest.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -30,18 +30,16 @@ std::vector<double> head(const testing::RunResult& r, const std::string& c, doub
   return out;
 }
 
-// cases/tait2005_screens.toml at the largest amplitude of Tait et al. (2005),
-// X0/L = 0.031 (X0 = 29.9 mm), at resonance (beta = 1 of the exact linear
-// frequency), for 3600 s: breaking waves against the end walls and through the
-// screens. dp = 14 mm (552 fluid particles, 8.5 across the 119 mm depth) and dt
-// = 1.4 ms (under 0.4 dp / u_max = 2.2 ms at the 2.5 m/s peak speed measured in
-// the first 10 s) so that the hour takes about 2 h on one thread. Tolerances:
-// no particle leaves the tank at any sample; the fluid mass at the end equals
-// the initial mass to 1e-12 (ISPH particles keep their mass: this fails only if
-// particles are removed); the maximum speed stays below 10 m/s (4 times the
-// measured peak; a blow-up exceeds it). Reported, not asserted: the average
-// crest of the last 10 cycles of the first and of the last 10 minutes (the
-// response must not drift).
+// cases/tait2005_screens.toml at the largest amplitude of Tait et al. (2005), X0/L = 0.031
+// (X0 = 29.9 mm), at resonance (beta = 1 of the exact linear frequency), for 3600 s: breaking
+// waves against the end walls and through the screens. dp = 14 mm (552 fluid particles, 8.5
+// across the 119 mm depth) and dt = 1.4 ms (under 0.4 dp / u_max = 2.2 ms at the 2.5 m/s peak
+// speed measured in the first 10 s) so that the hour takes about 2 h on one thread.
+// Tolerances: no particle leaves the tank at any sample; the fluid mass at the end equals the
+// initial mass to 1e-12 (ISPH particles keep their mass: this fails only if particles are
+// removed); the maximum speed stays below 10 m/s (4 times the measured peak; a blow-up exceeds
+// it). Reported, not asserted: the average crest of the last 10 cycles of the first 10 minutes
+// and of the hour (the response must not drift).
 TEST(Long, TaitScreensOneHourAtX0L0031) {
   const double duration = 3600.0, length = 0.966, depth = 0.119;
   const auto r = run_case_in_memory(
@@ -76,15 +74,8 @@ TEST(Long, TaitScreensOneHourAtX0L0031) {
       eta_tail.push_back(r["eta:right"][k]);
     }
   testing::record_curve({"gauge_last_30s",
-                         "Tait tank with screens, X0/L = 0.031, the last 30 s "
-                         "of the hour (dp = 14 mm)",
-                         "time (s)",
-                         "eta at x/L = 0.95 (m)",
-                         t_tail,
-                         eta_tail,
-                         "",
-                         {},
-                         {}});
+                         "Tait tank with screens, X0/L = 0.031, the last 30 s of the hour (dp = 14 mm)", "time (s)",
+                         "eta at x/L = 0.95 (m)", t_tail, eta_tail, "", {}, {}});
 }
 
 // cases/circular_rest.toml (thesis 3.4.4.1: R = 0.5 m, depth 0.241 m, no excitation) for

@@ -1,6 +1,5 @@
-// Sloshing in rectangular tanks at the cases' own resolution (label `long`): dp
-// = 5 mm, dt = 0.5 ms, as the thesis runs them (2.6.1-2.6.2); about 6 min each
-// on one thread.
+// Sloshing in rectangular tanks at the cases' own resolution (label `long`): dp = 5 mm,
+// dt = 0.5 ms, as the thesis runs them (2.6.1-2.6.2); about 6 min each on one thread.
 #include "sloshing_support.hpp"
 
 namespace sloshsph {
