@@ -46,8 +46,8 @@ inline Vec2 container_normal(const TankGeometry& tank, Vec2 p, double eps) {
 
 // The wall-contact step above on the fluid particles of `p`. `distance` is the sampled signed
 // distance (a cheap first test: bilinear between grid nodes `grid` apart, so within sqrt(2) grid
-// of the exact value, the distance being 1-Lipschitz), `tank` the exact one. Serial, so that the force sum does not depend on the thread count; the first test
-// is one grid look-up per particle.
+// of the exact value, the distance being 1-Lipschitz), `tank` the exact one. Serial, so that the
+// force sum does not depend on the thread count; the first test is one grid look-up per particle.
 inline WallContact keep_fluid_in_tank(Particles& p, const ContainerDistance& distance, const TankGeometry& tank,
                                       double dp, double grid, double dt) {
   const double contact = 0.25 * dp;
