@@ -28,4 +28,4 @@ PY
   done
 done
 echo
-echo "($(date -u +%Y-%m-%d), $(nproc) cores, ${seconds} s simulated per run, sloshsph $("$exe" --version | cut -d' ' -f2-))"
+echo "($(date -u +%Y-%m-%d), $(getconf _NPROCESSORS_ONLN) cores, ${seconds} s simulated per run, sloshsph $("$exe" --version | cut -d' ' -f2-))"

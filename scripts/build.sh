@@ -3,6 +3,6 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${SLOSHSPH_BUILD_DIR:-$root/build}
-jobs=${SLOSHSPH_JOBS:-$(nproc)}
+jobs=${SLOSHSPH_JOBS:-$(getconf _NPROCESSORS_ONLN)}
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "$jobs"

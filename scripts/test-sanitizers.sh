@@ -6,7 +6,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${SLOSHSPH_ASAN_BUILD_DIR:-$root/build-asan}
-jobs=${SLOSHSPH_JOBS:-$(nproc)}
+jobs=${SLOSHSPH_JOBS:-$(getconf _NPROCESSORS_ONLN)}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 # Open MPI keeps some allocations until exit (the MPI sweep test): suppressed by library name.

@@ -15,5 +15,8 @@ if [ "${1:-}" = "--long" ]; then labels="long"; shift; fi
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 cd "${SLOSHSPH_BUILD_DIR:-$root/build}"
+# The core count from getconf, not nproc: GNU nproc honours OMP_NUM_THREADS, so after the export
+# below it said 1 and the tests ran one at a time (the 2553 s CI of 2026-12-01).
+jobs="${SLOSHSPH_TEST_JOBS:-$(getconf _NPROCESSORS_ONLN)}"
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}"
-ctest -L "$labels" -j "${SLOSHSPH_TEST_JOBS:-$(nproc)}" --output-on-failure "$@"
+ctest -L "$labels" -j "$jobs" --output-on-failure "$@"
