@@ -17,18 +17,26 @@ namespace sloshsph {
 namespace fs = std::filesystem;
 namespace {
 
-double parse_ratio(const std::string& text, const std::string& where) {
+// `text` read whole as a number; nullopt if it is not one (or has anything after it).
+std::optional<double> whole_number(const std::string& text) {
   std::size_t used = 0;
   double v = 0.0;
   try {
     v = std::stod(text, &used);
   } catch (const std::exception&) {
-    used = 0;
+    return std::nullopt;
   }
-  if (used == 0 || used != text.size())
-    throw InputError(where, "--beta", "'" + text + "' is not a number (expected A:B:N, a list a,b,c, or one number)");
-  if (!(v > 0.0) || !std::isfinite(v)) throw InputError(where, "--beta", "frequency ratios must be positive, got " + text);
+  if (used != text.size()) return std::nullopt;
   return v;
+}
+
+double parse_ratio(const std::string& text, const std::string& where) {
+  const std::optional<double> v = whole_number(text);
+  if (!v)
+    throw InputError(where, "--beta", "'" + text + "' is not a number (expected A:B:N, a list a,b,c, or one number)");
+  if (!(*v > 0.0) || !std::isfinite(*v))
+    throw InputError(where, "--beta", "frequency ratios must be positive, got " + text);
+  return *v;
 }
 
 std::vector<std::string> split(const std::string& text, char sep) {
@@ -130,13 +138,9 @@ std::optional<std::vector<std::string>> numeric_range(const std::string& key, co
   if (parts.size() != 3) return std::nullopt;
   double ends[2];
   for (int k = 0; k < 2; ++k) {
-    std::size_t used = 0;
-    try {
-      ends[k] = std::stod(parts[k], &used);
-    } catch (const std::exception&) {
-      return std::nullopt;
-    }
-    if (used != parts[k].size() || !std::isfinite(ends[k])) return std::nullopt;
+    const std::optional<double> v = whole_number(parts[k]);
+    if (!v || !std::isfinite(*v)) return std::nullopt;
+    ends[k] = *v;
   }
   std::vector<std::string> values;
   for (double v : evenly_spaced(ends[0], ends[1], point_count(parts[2], "--set", key)))
