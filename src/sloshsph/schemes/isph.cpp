@@ -1,8 +1,7 @@
 #include "sloshsph/schemes/isph.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "sloshsph/core/errors.hpp"
@@ -69,11 +68,16 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
   });
 }
 
-std::size_t IsphScheme::memory_bytes() const {
-  const std::size_t n = data_.velocity_old.capacity();
+std::size_t IsphData::memory_bytes() const {
+  const std::size_t n = velocity_old.capacity();
   const std::size_t per = 4 * sizeof(Vec2) + sizeof(double) + 1 + sizeof(SymTensor2);
-  return n * per + neighbours_.memory_bytes();
+  return n * per + extra_acceleration.capacity() * sizeof(Vec2) + ppe_row.capacity() * sizeof(int) +
+         ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
+         ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
+         krylov.memory_bytes();
 }
+
+std::size_t IsphScheme::memory_bytes() const { return data_.memory_bytes() + neighbours_.memory_bytes(); }
 
 void IsphScheme::update_neighbours(Particles& p) {
   diagnostics_.neighbours_rebuilt = false;
@@ -343,80 +347,131 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
   diagnostics_.solver_residual = 0.0;
 }
 
+// The slots row i of the PPE needs at most: its diagonal and the unknowns among its neighbours
+// within the kernel's support (the neighbour list reaches a skin further) that assemble_ppe_row
+// keeps. The support test is widened by 1e-12 so that rounding cannot make it stricter than the
+// kernel's own r < support.
+std::size_t IsphScheme::ppe_row_length_bound(double support, const Particles& p, std::size_t i) const {
+  const IsphData& d = data_;
+  const double reach2 = support * support * (1.0 + 1e-12);
+  const Vec2 ri = d.position_star[i];
+  std::size_t length = 1;
+  for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
+    const std::size_t j = *it;
+    if (d.ppe_row[j] < 0) continue;
+    const Vec2 rij = ri - d.position_star[j];
+    if (norm2(rij) > reach2) continue;
+    if (p.is_fluid(i) && !p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) continue;
+    if (!p.is_fluid(i) && dot(rij, p.normal[i]) > 0.0) continue;
+    ++length;
+  }
+  return length;
+}
+
+// One row of the implicit PPE (see solve_pressure_implicit) into its reserved slots, the diagonal
+// first; entries of zero weight (neighbours of the Verlet skin beyond the kernel's support) are
+// left out. Returns the right side of the row.
+template <class K>
+double IsphScheme::assemble_ppe_row(const K& k, const Particles& p, const StepInput& in, std::size_t i,
+                                    std::size_t row) {
+  IsphData& d = data_;
+  SparseRows& A = d.ppe_matrix;
+  const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
+  const Vec2 ri = d.position_star[i];
+  std::size_t slot = A.slot_begin[row] + 1;
+  double diag = 0.0;
+  double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;
+  for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
+    const std::size_t j = *it;
+    const Vec2 rij = ri - d.position_star[j];
+    const double r2 = norm2(rij);
+    double coef;
+    if (p.is_fluid(i)) {
+      coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
+      // Fluid behind a thin wall sees its back pressure, taken from the last step (known).
+      if (!p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) {
+        diag += coef;
+        rhs += coef * p.pressure_back[j];
+        continue;
+      }
+    } else {
+      if (dot(rij, p.normal[i]) > 0.0) continue;  // wall rows: the front fluid only (eq. 2.19)
+      coef = k.w(std::sqrt(r2));
+      rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), rij) * rho0_ * coef;  // moving walls: g - a_w
+    }
+    if (coef == 0.0) continue;
+    diag += coef;
+    if (d.ppe_row[j] >= 0) {
+      assert(slot < A.slot_begin[row] + d.ppe_row_capacity[row] && "ppe_row_length_bound is a bound");
+      A.column[slot] = static_cast<std::uint32_t>(d.ppe_row[j]);
+      A.value[slot++] = -coef;
+    }
+  }
+  if (diag == 0.0) diag = 1.0;  // isolated wall particle: p_w = 0
+  if (!dirichlet && p.is_fluid(i)) diag = std::min(diag, lambda_full_);  // air at p = 0
+  A.column[A.slot_begin[row]] = static_cast<std::uint32_t>(row);
+  A.value[A.slot_begin[row]] = diag;
+  A.slot_end[row] = slot;
+  return rhs;
+}
+
 template <class K>
 void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInput& in) {
   // The same discrete equations as the explicit update, solved exactly each step:
   // fluid rows  sum_j lambda_ij (p_i - p_j) = b_i        (free-surface p = 0),
   // wall rows   sum_f W_wf p_w - sum_f W_wf p_f = (g - a)·sum_f rho0 r_wf W_wf   (eq. 2.19).
-  // Non-symmetric, so BiCGSTAB with a diagonal preconditioner, warm-started from p(t).
+  // Non-symmetric, so BiCGSTAB with a diagonal preconditioner (schemes/ppe_solver.hpp),
+  // warm-started from p(t).
   IsphData& d = data_;
   const std::size_t n = p.size();
-  std::vector<int> unknown(n, -1);
-  int nu = 0;
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   const std::uint8_t zero_from = dirichlet ? 1 : 2;  // flags with p = 0
+  d.ppe_row.assign(n, -1);
+  d.ppe_particle.clear();
+  d.ppe_row_capacity.clear();
+  auto add_unknown = [&](std::size_t i) {
+    d.ppe_row[i] = static_cast<int>(d.ppe_particle.size());
+    d.ppe_particle.push_back(static_cast<std::uint32_t>(i));
+  };
   for (std::size_t i = 0; i < p.n_fluid; ++i)
-    if (d.free_surface[i] < zero_from) unknown[i] = nu++;
+    if (d.free_surface[i] < zero_from) add_unknown(i);
   for (std::size_t w = p.n_fluid; w < n; ++w)
-    if (neighbours_.count(w) > 0) unknown[w] = nu++;
-
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(neighbours_.total_pairs() + n);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(nu), x0(nu);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int row = unknown[i];
-    if (row < 0) continue;
-    x0[row] = p.pressure[i];
-    const Vec2 ri = d.position_star[i];
-    double diag = 0.0;
-    double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;
-    for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - d.position_star[j];
-      const double r2 = norm2(rij);
-      double coef;
-      if (p.is_fluid(i)) {
-        coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
-        // Fluid behind a thin wall sees its back pressure, taken from the last step (known).
-        if (!p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) {
-          diag += coef;
-          rhs += coef * p.pressure_back[j];
-          continue;
-        }
-      } else {
-        if (dot(rij, p.normal[i]) > 0.0) continue;  // wall rows: the front fluid only (eq. 2.19)
-        coef = k.w(std::sqrt(r2));
-        rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), rij) * rho0_ * coef;  // moving walls: g - a_w
-      }
-      diag += coef;
-      if (unknown[j] >= 0) triplets.emplace_back(row, unknown[j], -coef);
-    }
-    if (diag == 0.0) diag = 1.0;  // isolated wall particle: p_w = 0
-    if (!dirichlet && p.is_fluid(i)) diag = std::min(diag, lambda_full_);  // air at p = 0
-    triplets.emplace_back(row, row, diag);
-    b[row] = rhs;
+    if (neighbours_.count(w) > 0) add_unknown(w);
+  const std::size_t rows = d.ppe_particle.size();
+  d.ppe_row_capacity.resize(rows);
+#pragma omp parallel for schedule(static)
+  for (std::size_t row = 0; row < rows; ++row)
+    d.ppe_row_capacity[row] = ppe_row_length_bound(k.support(), p, d.ppe_particle[row]);
+  d.ppe_matrix.reserve_rows(d.ppe_row_capacity);
+  d.ppe_rhs.resize(rows);
+  d.ppe_solution.resize(rows);
+#pragma omp parallel for schedule(static)
+  for (std::size_t row = 0; row < rows; ++row) {
+    const std::size_t i = d.ppe_particle[row];
+    d.ppe_solution[row] = p.pressure[i];
+    d.ppe_rhs[row] = assemble_ppe_row(k, p, in, i, row);
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> A(nu, nu);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> solver;
-  solver.setTolerance(scheme_.solver_tolerance);
-  solver.setMaxIterations(scheme_.solver_max_iterations);
-  solver.compute(A);
-  Eigen::VectorXd x = solver.solveWithGuess(b, x0);
-  int iterations = static_cast<int>(solver.iterations());
-  if (solver.info() != Eigen::Success || !x.allFinite()) {
+  const double tolerance = scheme_.solver_tolerance;
+  const int max_iterations = scheme_.solver_max_iterations;
+  KrylovReport report =
+      solve_bicgstab_jacobi(d.ppe_matrix, d.ppe_rhs, d.ppe_solution, tolerance, max_iterations, d.krylov);
+  int iterations = report.iterations;
+  if (!report.converged) {
     // BiCGSTAB can break down (a vanishing inner product); a restart from zero almost always
     // gets past it. If it does not, the step fails with the solver's numbers.
-    x = solver.solveWithGuess(b, Eigen::VectorXd::Zero(nu));
-    iterations += static_cast<int>(solver.iterations());
-    if (solver.info() != Eigen::Success || !x.allFinite())
-      throw RunFailure("the implicit pressure solve did not converge (BiCGSTAB, " + std::to_string(nu) +
+    std::fill(d.ppe_solution.begin(), d.ppe_solution.end(), 0.0);
+    report = solve_bicgstab_jacobi(d.ppe_matrix, d.ppe_rhs, d.ppe_solution, tolerance, max_iterations, d.krylov);
+    iterations += report.iterations;
+    if (!report.converged)
+      throw RunFailure("the implicit pressure solve did not converge (BiCGSTAB, " + std::to_string(rows) +
                        " unknowns, " + std::to_string(iterations) + " iterations, relative residual " +
-                       std::to_string(solver.error()) + "); try a smaller time.dt or scheme.solver_max_iterations");
+                       std::to_string(report.relative_residual) +
+                       "); try a smaller time.dt or scheme.solver_max_iterations");
   }
   diagnostics_.solver_iterations = iterations;
-  diagnostics_.solver_residual = solver.error();
-  for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = unknown[i] >= 0 ? clip(x[unknown[i]]) : 0.0;
+  diagnostics_.solver_residual = report.relative_residual;
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    p.pressure[i] = d.ppe_row[i] >= 0 ? clip(d.ppe_solution[d.ppe_row[i]]) : 0.0;
   // Wall pressures from the solved fluid, with the clipping at 0 of adami_wall_pressure
   // (the linear system cannot hold the clip; it matters only near the free surface).
   adami_wall_pressure(k, p, neighbours_, d.position_star, in.frame, rho0_);

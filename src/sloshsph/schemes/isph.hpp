@@ -12,6 +12,7 @@
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/core/vec2.hpp"
+#include "sloshsph/schemes/ppe_solver.hpp"
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 
@@ -30,7 +31,16 @@ struct IsphData {
   std::vector<SymTensor2> sps_stress;      // tau / rho, eq. 2.8, m^2/s^2
   std::vector<Vec2> wall_acceleration;     // acceleration of each fluid particle due to wall particles
   std::vector<Vec2> extra_acceleration;    // driver-supplied (screens), psi_sc of eq. 2.10
+  // The implicit PPE: unknown row of each particle (-1: known pressure), the particle of each
+  // row, the matrix, right side, solution and the Krylov scratch vectors (kept between steps).
+  std::vector<int> ppe_row;
+  std::vector<std::uint32_t> ppe_particle;
+  std::vector<std::size_t> ppe_row_capacity;
+  SparseRows ppe_matrix;
+  std::vector<double> ppe_rhs, ppe_solution;
+  BicgstabWork krylov;
   void resize(std::size_t n);
+  std::size_t memory_bytes() const;
 };
 
 class IsphScheme {
@@ -57,6 +67,9 @@ class IsphScheme {
   template <class K> void step_with(const K& kernel, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
+  std::size_t ppe_row_length_bound(double support, const Particles& p, std::size_t i) const;
+  template <class K>
+  double assemble_ppe_row(const K& kernel, const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
   void update_neighbours(Particles& p);
   double clip(double pressure) const;
   void mark_repulsive_layer(const Particles& p);

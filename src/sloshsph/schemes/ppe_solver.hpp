@@ -1,0 +1,54 @@
+#pragma once
+// The linear solver of the implicit pressure Poisson equation (IsphScheme): a sparse matrix in
+// row-slot form, written straight from the neighbour list, and BiCGSTAB with a diagonal (Jacobi)
+// preconditioner.
+//
+// Why not Eigen's BiCGSTAB, which this replaced: its vector operations and products run on one
+// thread (EIGEN_DONT_PARALLELIZE: Eigen's own OpenMP products cost more in fork/join than they
+// gain at these sizes), so half of a step did not use the second core; and its matrix came
+// through a triplet list and a sort (7% of the instructions, docs/performance.md). Here every
+// loop runs on all threads and every sum is taken over fixed blocks in a fixed order, so the
+// result is the same, bit for bit, on any number of threads.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sloshsph {
+
+// Row r holds its entries at [slot_begin[r], slot_end[r]) of `column` and `value`; the slots of a
+// row are reserved before it is filled (an upper bound of its length: its neighbour count + 1),
+// so the rows can be written in parallel and no entries move afterwards. The first entry of each
+// row is its diagonal.
+struct SparseRows {
+  std::vector<std::size_t> slot_begin, slot_end;
+  std::vector<std::uint32_t> column;
+  std::vector<double> value;
+
+  std::size_t rows() const { return slot_begin.size(); }
+  std::size_t nonzeros() const;
+  // Reserves `capacity[r]` slots for each row r (and empties all rows).
+  void reserve_rows(const std::vector<std::size_t>& capacity);
+  std::size_t memory_bytes() const;
+};
+
+struct KrylovReport {
+  int iterations = 0;
+  double relative_residual = 0.0;  // |b - A x| / |b| at the end
+  bool converged = false;
+};
+
+// Scratch vectors of the solver, kept between calls so that the time loop does not allocate.
+struct BicgstabWork {
+  std::vector<double> inverse_diagonal, r, r0, p, v, t, y;
+  std::vector<double> block_sums;
+  std::size_t memory_bytes() const;
+};
+
+// Solves A x = b from the initial guess in x: BiCGSTAB (van der Vorst 1992) with the right
+// diagonal preconditioner M = diag(A), to |b - A x| <= tolerance |b| or max_iterations.
+// A vanishing inner product (breakdown) restarts it from the current x with r0 = r. A zero right
+// side gives x = 0. Deterministic: the same result on any number of OpenMP threads.
+KrylovReport solve_bicgstab_jacobi(const SparseRows& A, const std::vector<double>& b, std::vector<double>& x,
+                                   double tolerance, int max_iterations, BicgstabWork& work);
+
+}  // namespace sloshsph
