@@ -1,6 +1,7 @@
 #include "sloshsph/run/run_case.hpp"
 
 #include <omp.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -29,6 +30,14 @@
 namespace sloshsph {
 namespace fs = std::filesystem;
 namespace {
+
+// The process's peak resident set (getrusage; Linux gives KiB): everything the run held at its
+// largest, the program and libraries included. 0 if the system does not say.
+double peak_resident_bytes() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0.0;
+  return static_cast<double>(usage.ru_maxrss) * 1024.0;
+}
 
 std::atomic<bool> g_stop{false};
 
@@ -360,6 +369,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   if (spec.excitation.type != ExcitationType::none) s["excitation_omega_rad_s"] = spec.excitation.omega;
   s["neighbour_list_builds"] = sim.scheme().neighbours().builds();
   s["memory_bytes_per_particle"] = static_cast<double>(sim.scheme().memory_bytes()) / total_particles;
+  s["peak_resident_memory_bytes"] = peak_resident_bytes();
   nlohmann::json units = nlohmann::json::object();
   for (const Column& c : sim.columns()) units[c.name] = c.unit;
   s["columns"] = units;
