@@ -14,8 +14,14 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 "$exe" run "$case" "${common[@]}" --checkpoint-every 0.25 --out "$dir/cut" &
 pid=$!
-# Wait until the run has written at least one periodic checkpoint, then interrupt it.
-for _ in $(seq 1 600); do [ -e "$dir/cut/checkpoint.bin" ] && break; sleep 0.05; done
+# Wait until the run has written at least one periodic checkpoint, then interrupt it. Up to 10
+# minutes (under the sanitizers the settle alone took more than the 30 s this once allowed, and
+# the signal then arrived before any checkpoint), or until the run has ended by itself.
+for _ in $(seq 1 12000); do
+  [ -e "$dir/cut/checkpoint.bin" ] && break
+  kill -0 $pid 2> /dev/null || break
+  sleep 0.05
+done
 kill -INT $pid; wait $pid; code=$?
 if [ $code = 0 ]; then echo "note: the run finished before the interrupt arrived"; else
   [ $code = 4 ] || fail "interrupted run should exit 4, got $code"
