@@ -8,12 +8,6 @@
 
 namespace sloshsph {
 
-std::size_t SparseRows::nonzeros() const {
-  std::size_t n = 0;
-  for (std::size_t r = 0; r < rows(); ++r) n += slot_end[r] - slot_begin[r];
-  return n;
-}
-
 void SparseRows::reserve_rows(const std::vector<std::size_t>& capacity) {
   const std::size_t n = capacity.size();
   slot_begin.resize(n);

@@ -25,7 +25,6 @@ struct SparseRows {
   std::vector<double> value;
 
   std::size_t rows() const { return slot_begin.size(); }
-  std::size_t nonzeros() const;
   // Reserves `capacity[r]` slots for each row r (and empties all rows).
   void reserve_rows(const std::vector<std::size_t>& capacity);
   std::size_t memory_bytes() const;
