@@ -347,10 +347,26 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
   diagnostics_.solver_residual = 0.0;
 }
 
+// How neighbour j enters row i of the PPE, from geometry alone (shared by the slot bound and the
+// assembly, so the two cannot disagree): a wall row takes only the fluid in front of its wall
+// (eq. 2.19); a fluid row sees a wall particle whose wall it stands behind (a thin wall) through
+// that particle's back pressure, known from the last step; everything else is a coefficient.
+namespace {
+
+enum class PpeNeighbour { ignored, back_pressure, coefficient };
+
+PpeNeighbour ppe_neighbour(const Particles& p, std::size_t i, std::size_t j, Vec2 ri, Vec2 rij) {
+  if (!p.is_fluid(i)) return dot(rij, p.normal[i]) > 0.0 ? PpeNeighbour::ignored : PpeNeighbour::coefficient;
+  if (!p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) return PpeNeighbour::back_pressure;
+  return PpeNeighbour::coefficient;
+}
+
+}  // namespace
+
 // The slots row i of the PPE needs at most: its diagonal and the unknowns among its neighbours
-// within the kernel's support (the neighbour list reaches a skin further) that assemble_ppe_row
-// keeps. The support test is widened by 1e-12 so that rounding cannot make it stricter than the
-// kernel's own r < support.
+// within the kernel's support (the neighbour list reaches a skin further) that enter it as a
+// coefficient. The support test is widened by 1e-12 so that rounding cannot make it stricter
+// than the kernel's own r < support.
 std::size_t IsphScheme::ppe_row_length_bound(double support, const Particles& p, std::size_t i) const {
   const IsphData& d = data_;
   const double reach2 = support * support * (1.0 + 1e-12);
@@ -361,9 +377,7 @@ std::size_t IsphScheme::ppe_row_length_bound(double support, const Particles& p,
     if (d.ppe_row[j] < 0) continue;
     const Vec2 rij = ri - d.position_star[j];
     if (norm2(rij) > reach2) continue;
-    if (p.is_fluid(i) && !p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) continue;
-    if (!p.is_fluid(i) && dot(rij, p.normal[i]) > 0.0) continue;
-    ++length;
+    if (ppe_neighbour(p, i, j, ri, rij) == PpeNeighbour::coefficient) ++length;
   }
   return length;
 }
@@ -385,17 +399,17 @@ double IsphScheme::assemble_ppe_row(const K& k, const Particles& p, const StepIn
     const std::size_t j = *it;
     const Vec2 rij = ri - d.position_star[j];
     const double r2 = norm2(rij);
+    const PpeNeighbour kind = ppe_neighbour(p, i, j, ri, rij);
+    if (kind == PpeNeighbour::ignored) continue;
     double coef;
     if (p.is_fluid(i)) {
       coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
-      // Fluid behind a thin wall sees its back pressure, taken from the last step (known).
-      if (!p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) {
+      if (kind == PpeNeighbour::back_pressure) {
         diag += coef;
         rhs += coef * p.pressure_back[j];
         continue;
       }
     } else {
-      if (dot(rij, p.normal[i]) > 0.0) continue;  // wall rows: the front fluid only (eq. 2.19)
       coef = k.w(std::sqrt(r2));
       rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), rij) * rho0_ * coef;  // moving walls: g - a_w
     }
@@ -428,7 +442,6 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
   const std::uint8_t zero_from = dirichlet ? 1 : 2;  // flags with p = 0
   d.ppe_row.assign(n, -1);
   d.ppe_particle.clear();
-  d.ppe_row_capacity.clear();
   auto add_unknown = [&](std::size_t i) {
     d.ppe_row[i] = static_cast<int>(d.ppe_particle.size());
     d.ppe_particle.push_back(static_cast<std::uint32_t>(i));
