@@ -2,11 +2,11 @@
 // exactly as the original: bitwise equal particles after the same number of steps.
 #include <gtest/gtest.h>
 
-#include <cstring>
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/io/case_reader.hpp"
 #include "sloshsph/run/simulation.hpp"
+#include "same_bits.hpp"
 
 namespace sloshsph {
 namespace {
@@ -17,10 +17,7 @@ CaseSpec small_case(const std::vector<std::string>& extra) {
   return resolve_case(read_case_file(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/liu_lin_2008.toml", sets));
 }
 
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
+using test::same_bits;
 
 // Reference: the uninterrupted run. Tolerance: none (bitwise), for the same thread count: the
 // checkpoint holds every evolving quantity, the neighbour list included, so the restored run

@@ -6,18 +6,15 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
-#include <cstring>
 
 #include "sloshsph/io/case_reader.hpp"
 #include "sloshsph/run/simulation.hpp"
+#include "same_bits.hpp"
 
 namespace sloshsph {
 namespace {
 
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
+using test::same_bits;
 
 struct RunEnd {
   Particles particles;
