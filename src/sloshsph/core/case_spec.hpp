@@ -87,6 +87,12 @@ struct WcsphSpec {
 
 enum class PressureSolve { explicit_update, implicit_krylov };
 
+// The preconditioner of the implicit PPE's Krylov solve (schemes/ppe_solver.hpp).
+//  multigrid: one aggregation V-cycle (schemes/ppe_multigrid.hpp): iterations nearly flat in N;
+//  jacobi:    diag(A): cheaper per iteration, but the iterations grow like sqrt(N)
+//             (docs/performance.md: 1,358 a step at 51,518 particles against 9).
+enum class Preconditioner { jacobi, multigrid };
+
 // How the free surface enters the pressure Poisson equation.
 //  thesis: p = 0 on the particles whose kernel-summed density is below the threshold (eq. 2.20).
 //  air:    p = 0 in the air that fills the truncated part of each kernel, so surface particles
@@ -105,6 +111,7 @@ struct SchemeSpec {
   double ct = 0.08;                      // Ct, for k_t
   double solver_tolerance = 1.0e-6;      // implicit PPE: relative residual
   int solver_max_iterations = 1000;      // implicit PPE
+  Preconditioner preconditioner = Preconditioner::multigrid;  // implicit PPE
   double neighbour_skin = 0.2;           // Verlet skin as a fraction of the support radius 2h
   // ISPH: repulsive force of the first wall layer (thesis eq. 3.18, physics/wall_repulsion.hpp).
   bool repulsive_walls = false;

@@ -109,6 +109,9 @@ void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.clip_negative_pressure = r.choice("negative_pressure", "clip", {"clip", "keep"}) == "clip";
   s.solver_tolerance = r.in_range("solver_tolerance", s.solver_tolerance, 1e-14, 1e-1);
   s.solver_max_iterations = static_cast<int>(r.integer("solver_max_iterations", s.solver_max_iterations, 1, 1000000));
+  s.preconditioner = r.choice("preconditioner", "multigrid", {"multigrid", "jacobi"}) == "jacobi"
+                         ? Preconditioner::jacobi
+                         : Preconditioner::multigrid;
   s.repulsive_walls = r.boolean("repulsive_walls", s.repulsive_walls);  // thesis eq. 3.18
   s.repulsive_coefficient = r.in_range("repulsive_coefficient", s.repulsive_coefficient, 0.0, 100.0);
   s.repulsive_range = r.in_range("repulsive_range", s.repulsive_range, 0.05, 2.0);
@@ -747,6 +750,7 @@ static toml::table scheme_table(const SchemeSpec& x) {
     t.insert("ct", x.ct);
     t.insert("solver_tolerance", x.solver_tolerance);
     t.insert("solver_max_iterations", x.solver_max_iterations);
+    t.insert("preconditioner", x.preconditioner == Preconditioner::jacobi ? "jacobi" : "multigrid");
     t.insert("repulsive_walls", x.repulsive_walls);
     t.insert("repulsive_coefficient", x.repulsive_coefficient);
     t.insert("repulsive_range", x.repulsive_range);

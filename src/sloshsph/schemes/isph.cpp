@@ -74,7 +74,7 @@ std::size_t IsphData::memory_bytes() const {
   return n * per + extra_acceleration.capacity() * sizeof(Vec2) + ppe_row.capacity() * sizeof(int) +
          ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
          ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
-         krylov.memory_bytes();
+         krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2);
 }
 
 std::size_t IsphScheme::memory_bytes() const { return data_.memory_bytes() + neighbours_.memory_bytes(); }
@@ -429,13 +429,19 @@ double IsphScheme::assemble_ppe_row(const K& k, const Particles& p, const StepIn
   return rhs;
 }
 
+KrylovReport IsphScheme::solve_ppe_system(bool multigrid) {
+  IsphData& d = data_;
+  return solve_bicgstab(d.ppe_matrix, d.ppe_rhs, d.ppe_solution, scheme_.solver_tolerance,
+                        scheme_.solver_max_iterations, d.krylov, multigrid ? &d.multigrid : nullptr);
+}
+
 template <class K>
 void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInput& in) {
   // The same discrete equations as the explicit update, solved exactly each step:
   // fluid rows  sum_j lambda_ij (p_i - p_j) = b_i        (free-surface p = 0),
   // wall rows   sum_f W_wf p_w - sum_f W_wf p_f = (g - a)·sum_f rho0 r_wf W_wf   (eq. 2.19).
-  // Non-symmetric, so BiCGSTAB with a diagonal preconditioner (schemes/ppe_solver.hpp),
-  // warm-started from p(t).
+  // Non-symmetric, so BiCGSTAB (schemes/ppe_solver.hpp) with a diagonal or multigrid
+  // preconditioner (scheme.preconditioner), warm-started from p(t).
   IsphData& d = data_;
   const std::size_t n = p.size();
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
@@ -464,16 +470,20 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
     d.ppe_solution[row] = p.pressure[i];
     d.ppe_rhs[row] = assemble_ppe_row(k, p, in, i, row);
   }
-  const double tolerance = scheme_.solver_tolerance;
-  const int max_iterations = scheme_.solver_max_iterations;
-  KrylovReport report =
-      solve_bicgstab_jacobi(d.ppe_matrix, d.ppe_rhs, d.ppe_solution, tolerance, max_iterations, d.krylov);
+  const bool multigrid = scheme_.preconditioner == Preconditioner::multigrid;
+  if (multigrid) {
+    d.ppe_row_position.resize(rows);
+    for (std::size_t row = 0; row < rows; ++row) d.ppe_row_position[row] = d.position_star[d.ppe_particle[row]];
+    build_multigrid(d.ppe_matrix, d.ppe_row_position, 2.0 * dp_, d.multigrid);  // aggregates of about 2 x 2
+  }
+  KrylovReport report = solve_ppe_system(multigrid);
   int iterations = report.iterations;
   if (!report.converged) {
-    // BiCGSTAB can break down (a vanishing inner product); a restart from zero almost always
-    // gets past it. If it does not, the step fails with the solver's numbers.
+    // BiCGSTAB can break down (a vanishing inner product); a restart from zero with the Jacobi
+    // preconditioner almost always gets past it. If it does not, the step fails with the
+    // solver's numbers.
     std::fill(d.ppe_solution.begin(), d.ppe_solution.end(), 0.0);
-    report = solve_bicgstab_jacobi(d.ppe_matrix, d.ppe_rhs, d.ppe_solution, tolerance, max_iterations, d.krylov);
+    report = solve_ppe_system(false);
     iterations += report.iterations;
     if (!report.converged)
       throw RunFailure("the implicit pressure solve did not converge (BiCGSTAB, " + std::to_string(rows) +

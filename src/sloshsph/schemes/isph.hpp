@@ -12,6 +12,7 @@
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/core/vec2.hpp"
+#include "sloshsph/schemes/ppe_multigrid.hpp"
 #include "sloshsph/schemes/ppe_solver.hpp"
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
@@ -39,6 +40,8 @@ struct IsphData {
   SparseRows ppe_matrix;
   std::vector<double> ppe_rhs, ppe_solution;
   BicgstabWork krylov;
+  Multigrid multigrid;
+  std::vector<Vec2> ppe_row_position;  // r* of each row's particle (multigrid aggregates)
   void resize(std::size_t n);
   std::size_t memory_bytes() const;
 };
@@ -70,6 +73,7 @@ class IsphScheme {
   std::size_t ppe_row_length_bound(double support, const Particles& p, std::size_t i) const;
   template <class K>
   double assemble_ppe_row(const K& kernel, const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
+  KrylovReport solve_ppe_system(bool multigrid);
   void update_neighbours(Particles& p);
   double clip(double pressure) const;
   void mark_repulsive_layer(const Particles& p);

@@ -1,5 +1,7 @@
 #include "sloshsph/schemes/ppe_solver.hpp"
 
+#include "sloshsph/schemes/ppe_multigrid.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -60,18 +62,12 @@ std::array<double, K> blocked_sums(std::size_t n, std::vector<double>& sums, con
   return total;
 }
 
-double row_times(const SparseRows& A, std::size_t r, const std::vector<double>& x) {
-  double sum = 0.0;
-  for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) sum += A.value[k] * x[A.column[k]];
-  return sum;
-}
-
 // r = b - A x; returns |r|^2.
 double residual(const SparseRows& A, const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
                 std::vector<double>& sums) {
   return blocked_sums<1>(b.size(), sums, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
     for (std::size_t i = i0; i < i1; ++i) {
-      r[i] = b[i] - row_times(A, i, x);
+      r[i] = b[i] - A.row_times(i, x);
       acc[0] += r[i] * r[i];
     }
   })[0];
@@ -79,8 +75,8 @@ double residual(const SparseRows& A, const std::vector<double>& b, const std::ve
 
 }  // namespace
 
-KrylovReport solve_bicgstab_jacobi(const SparseRows& A, const std::vector<double>& b, std::vector<double>& x,
-                                   double tolerance, int max_iterations, BicgstabWork& w) {
+KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, std::vector<double>& x, double tolerance,
+                            int max_iterations, BicgstabWork& w, Multigrid* multigrid) {
   const std::size_t n = b.size();
   for (auto* v : {&w.inverse_diagonal, &w.r, &w.r0, &w.p, &w.v, &w.t, &w.y}) v->resize(n);
   KrylovReport report;
@@ -122,11 +118,12 @@ KrylovReport solve_bicgstab_jacobi(const SparseRows& A, const std::vector<double
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       w.p[k] = w.r[k] + beta * (w.p[k] - omega * w.v[k]);
-      w.y[k] = w.inverse_diagonal[k] * w.p[k];
+      if (!multigrid) w.y[k] = w.inverse_diagonal[k] * w.p[k];
     }
+    if (multigrid) apply_multigrid(A, *multigrid, w.p, w.y);
     const double r0_v = blocked_sums<1>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
       for (std::size_t k = i0; k < i1; ++k) {
-        w.v[k] = row_times(A, k, w.y);
+        w.v[k] = A.row_times(k, w.y);
         acc[0] += w.r0[k] * w.v[k];
       }
     })[0];
@@ -135,11 +132,12 @@ KrylovReport solve_bicgstab_jacobi(const SparseRows& A, const std::vector<double
     for (std::size_t k = 0; k < n; ++k) {
       x[k] += alpha * w.y[k];
       w.r[k] -= alpha * w.v[k];
-      w.y[k] = w.inverse_diagonal[k] * w.r[k];
+      if (!multigrid) w.y[k] = w.inverse_diagonal[k] * w.r[k];
     }
+    if (multigrid) apply_multigrid(A, *multigrid, w.r, w.y);
     const auto ts = blocked_sums<2>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 2>& acc) {
       for (std::size_t k = i0; k < i1; ++k) {
-        w.t[k] = row_times(A, k, w.y);
+        w.t[k] = A.row_times(k, w.y);
         acc[0] += w.t[k] * w.t[k];
         acc[1] += w.t[k] * w.r[k];
       }

@@ -1,7 +1,7 @@
 #pragma once
 // The linear solver of the implicit pressure Poisson equation (IsphScheme): a sparse matrix in
 // row-slot form, written straight from the neighbour list, and BiCGSTAB with a diagonal (Jacobi)
-// preconditioner.
+// or multigrid (ppe_multigrid.hpp) preconditioner.
 //
 // Why not Eigen's BiCGSTAB, which this replaced: its vector operations and products run on one
 // thread (EIGEN_DONT_PARALLELIZE: Eigen's own OpenMP products cost more in fork/join than they
@@ -15,6 +15,8 @@
 
 namespace sloshsph {
 
+struct Multigrid;
+
 // Row r holds its entries at [slot_begin[r], slot_end[r]) of `column` and `value`; the slots of a
 // row are reserved before it is filled (an upper bound of its length: its neighbour count + 1),
 // so the rows can be written in parallel and no entries move afterwards. The first entry of each
@@ -25,6 +27,12 @@ struct SparseRows {
   std::vector<double> value;
 
   std::size_t rows() const { return slot_begin.size(); }
+  // Row r times x.
+  double row_times(std::size_t r, const std::vector<double>& x) const {
+    double sum = 0.0;
+    for (std::size_t k = slot_begin[r]; k < slot_end[r]; ++k) sum += value[k] * x[column[k]];
+    return sum;
+  }
   // Reserves `capacity[r]` slots for each row r (and empties all rows).
   void reserve_rows(const std::vector<std::size_t>& capacity);
   std::size_t memory_bytes() const;
@@ -43,11 +51,13 @@ struct BicgstabWork {
   std::size_t memory_bytes() const;
 };
 
-// Solves A x = b from the initial guess in x: BiCGSTAB (van der Vorst 1992) with the right
-// diagonal preconditioner M = diag(A), to |b - A x| <= tolerance |b| or max_iterations.
-// A vanishing inner product (breakdown) restarts it from the current x with r0 = r. A zero right
-// side gives x = 0. Deterministic: the same result on any number of OpenMP threads.
-KrylovReport solve_bicgstab_jacobi(const SparseRows& A, const std::vector<double>& b, std::vector<double>& x,
-                                   double tolerance, int max_iterations, BicgstabWork& work);
+// Solves A x = b from the initial guess in x: BiCGSTAB (van der Vorst 1992) with a right
+// preconditioner, to |b - A x| <= tolerance |b| or max_iterations. The preconditioner is
+// diag(A) (Jacobi), or one V-cycle of `multigrid` when given (built for A by build_multigrid,
+// schemes/ppe_multigrid.hpp). A vanishing inner product (breakdown) restarts it from the current
+// x with r0 = r. A zero right side gives x = 0. Deterministic: the same result on any number of
+// OpenMP threads.
+KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, std::vector<double>& x, double tolerance,
+                            int max_iterations, BicgstabWork& work, Multigrid* multigrid = nullptr);
 
 }  // namespace sloshsph

@@ -60,7 +60,7 @@ TEST(PpeSolver, SolvesANonSymmetricSystemToItsTolerance) {
   const std::vector<double> b = times(A, exact);
   std::vector<double> x(A.rows(), 0.0);
   BicgstabWork work;
-  const KrylovReport report = solve_bicgstab_jacobi(A, b, x, 1e-10, 1000, work);
+  const KrylovReport report = solve_bicgstab(A, b, x, 1e-10, 1000, work);
   ASSERT_TRUE(report.converged);
   EXPECT_GT(report.iterations, 1);
   EXPECT_LE(report.relative_residual, 1e-10);
@@ -83,7 +83,7 @@ TEST(PpeSolver, AWarmStartAtTheSolutionNeedsNoIteration) {
   std::vector<double> x(A.rows(), 3.0);
   const std::vector<double> b = times(A, x);
   BicgstabWork work;
-  const KrylovReport report = solve_bicgstab_jacobi(A, b, x, 1e-8, 100, work);
+  const KrylovReport report = solve_bicgstab(A, b, x, 1e-8, 100, work);
   EXPECT_TRUE(report.converged);
   EXPECT_EQ(report.iterations, 0);
   EXPECT_EQ(x[17], 3.0);
@@ -93,7 +93,7 @@ TEST(PpeSolver, AZeroRightSideGivesZero) {
   const SparseRows A = convection_diffusion(5, 0.0);
   std::vector<double> x(A.rows(), 1.0);
   BicgstabWork work;
-  const KrylovReport report = solve_bicgstab_jacobi(A, std::vector<double>(A.rows(), 0.0), x, 1e-8, 100, work);
+  const KrylovReport report = solve_bicgstab(A, std::vector<double>(A.rows(), 0.0), x, 1e-8, 100, work);
   EXPECT_TRUE(report.converged);
   for (double v : x) EXPECT_EQ(v, 0.0);
 }
@@ -102,7 +102,7 @@ TEST(PpeSolver, ReportsNoConvergenceAtTheIterationLimit) {
   const SparseRows A = convection_diffusion(40, 0.0);
   std::vector<double> b(A.rows(), 1.0), x(A.rows(), 0.0);
   BicgstabWork work;
-  const KrylovReport report = solve_bicgstab_jacobi(A, b, x, 1e-12, 3, work);
+  const KrylovReport report = solve_bicgstab(A, b, x, 1e-12, 3, work);
   EXPECT_FALSE(report.converged);
   EXPECT_EQ(report.iterations, 3);
   EXPECT_GT(report.relative_residual, 1e-12);
@@ -117,7 +117,7 @@ TEST(PpeSolver, SameBitsOnOneAndTwoThreads) {
     omp_set_num_threads(threads);
     std::vector<double> x(A.rows(), 0.0);
     BicgstabWork work;
-    const KrylovReport report = solve_bicgstab_jacobi(A, b, x, 1e-9, 1000, work);
+    const KrylovReport report = solve_bicgstab(A, b, x, 1e-9, 1000, work);
     omp_set_num_threads(before);
     EXPECT_TRUE(report.converged);
     return std::make_pair(x, report.iterations);

@@ -1,0 +1,254 @@
+#include "sloshsph/schemes/ppe_multigrid.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sloshsph {
+
+namespace {
+
+// Loops shorter than this run on one thread: on the coarse levels the fork costs more than the
+// work. (A loop's result does not depend on it: every loop is a gather.)
+constexpr std::size_t kParallelRows = 2048;
+
+constexpr std::size_t kMaxLevels = 40;
+
+template <class V> std::size_t capacity_bytes(const V& v) { return v.capacity() * sizeof(typename V::value_type); }
+
+// The aggregates of the next level: the rows of the finer level whose cells, halved `shift`
+// times, coincide. Rows are numbered in the order of their cells (row-major), members in the
+// order of the finer rows, so the numbering does not depend on the thread count.
+void aggregate(const std::vector<std::int64_t>& fine_x, const std::vector<std::int64_t>& fine_y, int shift,
+               Multigrid& mg, MultigridLevel& L) {
+  const std::size_t n = fine_x.size();
+  std::int64_t x0 = std::numeric_limits<std::int64_t>::max(), y0 = x0, x1 = std::numeric_limits<std::int64_t>::min();
+  for (std::size_t i = 0; i < n; ++i) {
+    x0 = std::min(x0, fine_x[i] >> shift);
+    x1 = std::max(x1, fine_x[i] >> shift);
+    y0 = std::min(y0, fine_y[i] >> shift);
+  }
+  const auto width = static_cast<std::uint64_t>(x1 - x0 + 1);
+  auto& keys = mg.sort_keys;
+  keys.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    keys[i] = {static_cast<std::uint64_t>((fine_y[i] >> shift) - y0) * width +
+                   static_cast<std::uint64_t>((fine_x[i] >> shift) - x0),
+               static_cast<std::uint32_t>(i)};
+  std::sort(keys.begin(), keys.end());
+  L.parent.resize(n);
+  L.member.resize(n);
+  L.member_begin.clear();
+  L.cell_x.clear();
+  L.cell_y.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t i = keys[k].second;
+    if (k == 0 || keys[k].first != keys[k - 1].first) {
+      L.member_begin.push_back(k);
+      L.cell_x.push_back(fine_x[i] >> shift);
+      L.cell_y.push_back(fine_y[i] >> shift);
+    }
+    L.member[k] = i;
+    L.parent[i] = static_cast<std::uint32_t>(L.member_begin.size() - 1);
+  }
+  L.member_begin.push_back(n);
+}
+
+// L.A = R A P with R = P^T D^-1 (D = diag A) and P the piecewise-constant prolongation of the
+// aggregates; the diagonal first in each row. Two passes over the aggregates: the length of each
+// coarse row, then its entries.
+void galerkin(const SparseRows& A, const std::vector<double>& inverse_diagonal, Multigrid& mg, MultigridLevel& L) {
+  const std::size_t rows = L.member_begin.size() - 1;
+  const int threads = omp_get_max_threads();
+  mg.stamp.resize(threads);
+  mg.slot.resize(threads);
+  std::vector<std::size_t>& length = mg.row_length;
+  length.resize(rows);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) L.A.reserve_rows(length);
+#pragma omp parallel if (rows > kParallelRows / 4)
+    {
+      auto& stamp = mg.stamp[omp_get_thread_num()];
+      auto& slot = mg.slot[omp_get_thread_num()];
+      stamp.assign(rows, -1);
+      slot.resize(rows);
+#pragma omp for schedule(static)
+      for (std::size_t I = 0; I < rows; ++I) {
+        const auto row = static_cast<std::int32_t>(I);
+        std::size_t next = pass == 0 ? 0 : L.A.slot_begin[I];
+        auto enter = [&](std::size_t J) {
+          stamp[J] = row;
+          slot[J] = static_cast<std::int32_t>(next - (pass == 0 ? 0 : L.A.slot_begin[I]));
+          if (pass == 1) {
+            L.A.column[next] = static_cast<std::uint32_t>(J);
+            L.A.value[next] = 0.0;
+          }
+          ++next;
+        };
+        enter(I);  // the diagonal first
+        for (std::size_t m = L.member_begin[I]; m < L.member_begin[I + 1]; ++m) {
+          const std::size_t i = L.member[m];
+          for (std::size_t k = A.slot_begin[i]; k < A.slot_end[i]; ++k) {
+            const std::size_t J = L.parent[A.column[k]];
+            if (stamp[J] != row) enter(J);
+            if (pass == 1) L.A.value[L.A.slot_begin[I] + slot[J]] += inverse_diagonal[i] * A.value[k];
+          }
+        }
+        if (pass == 0) length[I] = next;
+        else L.A.slot_end[I] = next;
+      }
+    }
+  }
+  L.inverse_diagonal.resize(rows);
+  for (std::size_t I = 0; I < rows; ++I) {
+    const double d = L.A.value[L.A.slot_begin[I]];
+    L.inverse_diagonal[I] = d != 0.0 ? 1.0 / d : 1.0;
+  }
+  L.b.resize(rows);
+  L.x.resize(rows);
+  L.r.resize(rows);
+}
+
+bool factor_coarsest(Multigrid& mg) {
+  const SparseRows& A = mg.levels.back().A;
+  const auto n = static_cast<Eigen::Index>(A.rows());
+  mg.coarsest_dense.setZero(n, n);
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) mg.coarsest_dense(r, A.column[k]) += A.value[k];
+  if (!mg.coarsest_dense.allFinite()) return false;
+  mg.coarsest.compute(mg.coarsest_dense);
+  const double rcond = mg.coarsest.rcond();
+  return std::isfinite(rcond) && rcond > 1e-13;
+}
+
+// A level of the cycle: its operator and vectors. The finest level's are the caller's.
+struct LevelView {
+  const SparseRows* A;
+  const std::vector<double>* inverse_diagonal;
+  const std::vector<double>* b;
+  std::vector<double>* x;
+  std::vector<double>* r;
+};
+
+// r = b - A x.
+void residual(const LevelView& v) {
+  const std::size_t n = v.A->rows();
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) (*v.r)[i] = (*v.b)[i] - v.A->row_times(i, *v.x);
+}
+
+// x += weight D^-1 r.
+void jacobi_update(const LevelView& v, double weight) {
+  const std::size_t n = v.A->rows();
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) (*v.x)[i] += weight * (*v.inverse_diagonal)[i] * (*v.r)[i];
+}
+
+LevelView view(MultigridLevel& L) { return {&L.A, &L.inverse_diagonal, &L.b, &L.x, &L.r}; }
+
+// x = M^-1 b on level `fine` (the finest when fine.A is the caller's matrix); `next` is the index
+// in mg.levels of the level below.
+void cycle(Multigrid& mg, const LevelView& fine, std::size_t next) {
+  const MultigridOptions& o = mg.options;
+  const std::size_t n = fine.A->rows();
+  // Pre-smoothing from x = 0: the first sweep is x = w D^-1 b.
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) (*fine.x)[i] = o.jacobi_weight * (*fine.inverse_diagonal)[i] * (*fine.b)[i];
+  for (int s = 1; s < o.smoothing_sweeps; ++s) {
+    residual(fine);
+    jacobi_update(fine, o.jacobi_weight);
+  }
+  residual(fine);
+  MultigridLevel& C = mg.levels[next];
+  const std::size_t rows = C.A.rows();
+#pragma omp parallel for schedule(static) if (rows > kParallelRows)
+  for (std::size_t I = 0; I < rows; ++I) {
+    double sum = 0.0;
+    for (std::size_t m = C.member_begin[I]; m < C.member_begin[I + 1]; ++m) {
+      const std::size_t i = C.member[m];
+      sum += (*fine.inverse_diagonal)[i] * (*fine.r)[i];
+    }
+    C.b[I] = sum;
+  }
+  if (next + 1 == mg.levels.size()) {
+    const Eigen::Map<const Eigen::VectorXd> b(C.b.data(), static_cast<Eigen::Index>(rows));
+    Eigen::Map<Eigen::VectorXd>(C.x.data(), static_cast<Eigen::Index>(rows)) = mg.coarsest.solve(b);
+  } else {
+    cycle(mg, view(C), next + 1);
+  }
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) (*fine.x)[i] += o.overcorrection * C.x[C.parent[i]];
+  for (int s = 0; s < o.smoothing_sweeps; ++s) {
+    residual(fine);
+    jacobi_update(fine, o.jacobi_weight);
+  }
+}
+
+}  // namespace
+
+std::size_t Multigrid::memory_bytes() const {
+  std::size_t bytes = capacity_bytes(fine_inverse_diagonal) + capacity_bytes(fine_r) + capacity_bytes(fine_cell_x) + capacity_bytes(fine_cell_y) +
+                      capacity_bytes(sort_keys) + capacity_bytes(row_length) + static_cast<std::size_t>(coarsest_dense.size()) * sizeof(double) * 2;
+  for (const auto& v : stamp) bytes += capacity_bytes(v);
+  for (const auto& v : slot) bytes += capacity_bytes(v);
+  for (const MultigridLevel& L : levels)
+    bytes += L.A.memory_bytes() + capacity_bytes(L.inverse_diagonal) + capacity_bytes(L.member_begin) +
+             capacity_bytes(L.member) + capacity_bytes(L.parent) + capacity_bytes(L.cell_x) +
+             capacity_bytes(L.cell_y) + capacity_bytes(L.b) + capacity_bytes(L.x) + capacity_bytes(L.r);
+  return bytes;
+}
+
+bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, double cell, Multigrid& mg) {
+  mg.ready = false;
+  const std::size_t n = A.rows();
+  std::vector<double>& inverse_diagonal = mg.fine_inverse_diagonal;
+  inverse_diagonal.resize(n);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = A.slot_end[i] > A.slot_begin[i] ? A.value[A.slot_begin[i]] : 0.0;
+    inverse_diagonal[i] = d != 0.0 ? 1.0 / d : 1.0;  // as the Jacobi preconditioner's
+  }
+  if (n <= mg.options.coarsest_rows || !(cell > 0.0)) return false;
+  mg.fine_cell_x.resize(n);
+  mg.fine_cell_y.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    mg.fine_cell_x[i] = static_cast<std::int64_t>(std::floor(position[i].x / cell));
+    mg.fine_cell_y[i] = static_cast<std::int64_t>(std::floor(position[i].y / cell));
+  }
+  // Level k aggregates the rows of level k - 1 (the caller's matrix for k = 0). Levels are
+  // addressed by index: emplace_back may move them.
+  std::size_t count = 0;
+  while (count < kMaxLevels) {
+    if (mg.levels.size() <= count) mg.levels.emplace_back();
+    MultigridLevel& L = mg.levels[count];
+    if (count == 0) {
+      aggregate(mg.fine_cell_x, mg.fine_cell_y, 0, mg, L);
+      galerkin(A, inverse_diagonal, mg, L);
+    } else {
+      const MultigridLevel& F = mg.levels[count - 1];
+      aggregate(F.cell_x, F.cell_y, 1, mg, L);
+      galerkin(F.A, F.inverse_diagonal, mg, L);
+    }
+    ++count;
+    if (L.A.rows() <= mg.options.coarsest_rows) break;
+  }
+  mg.levels.resize(count);
+  mg.fine_r.resize(n);
+  mg.ready = factor_coarsest(mg);
+  return mg.ready;
+}
+
+void apply_multigrid(const SparseRows& A, Multigrid& mg, const std::vector<double>& r, std::vector<double>& z) {
+  const std::vector<double>& inverse_diagonal = mg.fine_inverse_diagonal;
+  if (!mg.ready) {
+    const std::size_t n = A.rows();
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+    for (std::size_t i = 0; i < n; ++i) z[i] = inverse_diagonal[i] * r[i];
+    return;
+  }
+  cycle(mg, {&A, &inverse_diagonal, &r, &z, &mg.fine_r}, 0);
+}
+
+}  // namespace sloshsph
