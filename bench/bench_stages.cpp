@@ -26,25 +26,33 @@ CaseSpec tait_case(double dp) {
                                      {"particles.dp=" + std::to_string(dp), "output.snapshot_interval=0"}));
 }
 
-// A tank of aspect 2:1 filled to half its height with about `fluid` particles (walls add more).
-CaseSpec sized_tank(double fluid) {
+// A tank of aspect 2:1 filled to half its height with about `fluid` particles (walls add more),
+// its pressure solve preconditioned by `preconditioner` ("multigrid" or "jacobi").
+CaseSpec sized_tank(double fluid, const std::string& preconditioner) {
   const double length = 2.0, depth = 1.0;
   const double dp = std::sqrt(length * depth / fluid);
   return resolve_case(read_case_file(case_file("hydrostatic.toml"),
                                      {"tank.length=2.0", "tank.height=1.5", "fill.depth=1.0",
                                       "particles.dp=" + std::to_string(dp), "time.dt=" + std::to_string(0.05 * dp),
                                       "output.snapshot_interval=0", "probes.pressure=[]",
-                                      "scheme.solver_max_iterations=20000"}));  // see docs/performance.md
+                                      "scheme.solver_max_iterations=20000",  // see docs/performance.md
+                                      "scheme.preconditioner=\"" + preconditioner + "\""}));
 }
 
 // One Simulation::step (the whole ISPH step with screens, turbulence, walls, observers'
-// accumulators), after 20 steps to leave the start-up.
+// accumulators), after 20 steps to leave the start-up; the counter krylov_iterations is the mean
+// of the pressure solve's iterations over the timed steps.
 void run_steps(benchmark::State& state, const CaseSpec& spec) {
   Simulation sim(spec);
   for (int k = 0; k < 20; ++k) sim.step();
   const double particles = static_cast<double>(sim.particles().size());
-  for (auto _ : state) sim.step();
+  double iterations = 0.0;
+  for (auto _ : state) {
+    sim.step();
+    iterations += sim.scheme().diagnostics().solver_iterations;
+  }
   state.counters["particles"] = particles;
+  state.counters["krylov_iterations"] = iterations / static_cast<double>(state.iterations());
   state.counters["particle_steps/s"] =
       benchmark::Counter(particles * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -52,8 +60,19 @@ void run_steps(benchmark::State& state, const CaseSpec& spec) {
 void IsphStepTaitScreens(benchmark::State& state) { run_steps(state, tait_case(state.range(0) / 1000.0)); }
 BENCHMARK(IsphStepTaitScreens)->Arg(10)->Arg(7)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void IsphStepSized(benchmark::State& state) { run_steps(state, sized_tank(static_cast<double>(state.range(0)))); }
-BENCHMARK(IsphStepSized)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+// The cost-per-particle curve (issue 8): multigrid from 2,000 to 200,000 particles; the Jacobi
+// preconditioner to 50,000 (at 200,000 one of its steps takes about a minute).
+void IsphStepSized(benchmark::State& state) {
+  run_steps(state, sized_tank(static_cast<double>(state.range(0)), "multigrid"));
+}
+BENCHMARK(IsphStepSized)
+    ->Arg(2000)->Arg(5000)->Arg(20000)->Arg(50000)->Arg(100000)->Arg(200000)
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void IsphStepSizedJacobi(benchmark::State& state) {
+  run_steps(state, sized_tank(static_cast<double>(state.range(0)), "jacobi"));
+}
+BENCHMARK(IsphStepSizedJacobi)->Arg(2000)->Arg(5000)->Arg(20000)->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void WcsphStepTait(benchmark::State& state) {
   const CaseSpec spec = resolve_case(read_case_file(case_file("tait2005_screens.toml"),
