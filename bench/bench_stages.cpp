@@ -21,9 +21,10 @@ namespace {
 std::string case_file(const std::string& name) { return std::string(SLOSHSPH_SOURCE_DIR) + "/cases/" + name; }
 
 // The Tait tank with its two Ergun screens at X0/L = 0.016 (cases/tait2005_screens.toml).
-CaseSpec tait_case(double dp) {
+CaseSpec tait_case(double dp, const std::string& preconditioner = "multigrid") {
   return resolve_case(read_case_file(case_file("tait2005_screens.toml"),
-                                     {"particles.dp=" + std::to_string(dp), "output.snapshot_interval=0"}));
+                                     {"particles.dp=" + std::to_string(dp), "output.snapshot_interval=0",
+                                      "scheme.preconditioner=\"" + preconditioner + "\""}));
 }
 
 // A tank of aspect 2:1 filled to half its height with about `fluid` particles (walls add more),
@@ -59,6 +60,11 @@ void run_steps(benchmark::State& state, const CaseSpec& spec) {
 
 void IsphStepTaitScreens(benchmark::State& state) { run_steps(state, tait_case(state.range(0) / 1000.0)); }
 BENCHMARK(IsphStepTaitScreens)->Arg(10)->Arg(7)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void IsphStepTaitScreensJacobi(benchmark::State& state) {
+  run_steps(state, tait_case(state.range(0) / 1000.0, "jacobi"));
+}
+BENCHMARK(IsphStepTaitScreensJacobi)->Arg(10)->Arg(7)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The cost-per-particle curve (issue 8): multigrid from 2,000 to 200,000 particles; the Jacobi
 // preconditioner to 50,000 (at 200,000 one of its steps takes about a minute).

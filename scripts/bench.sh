@@ -5,8 +5,10 @@
 # summary.json. Cases: the hydrostatic tank (dp = 5 mm), the Tait tank without screens (dp = 5
 # mm), the Tait tank with two Ergun screens at dp = 7 mm and 5 mm, and with --large a
 # 200,000-particle tank at rest (2 m x 1 m of water, dp = 3.16 mm, dt = 0.05 dp as
-# bench/bench_stages.cpp's sized tank) for 0.002 s (13 steps) whatever SECONDS says: its pressure
-# solve needs about 5,000 iterations a step, so the two runs take about 30 minutes.
+# bench/bench_stages.cpp's sized tank) for 0.0063 s (40 steps) whatever SECONDS says (about a
+# minute on one thread with the default multigrid preconditioner; with
+# SLOSHSPH_BENCH_SET='scheme.preconditioner="jacobi"' about 5,000 iterations a step and hours).
+# SLOSHSPH_BENCH_SET adds space-separated KEY=VALUE overrides to every run (to compare options).
 # Usage: scripts/bench.sh [SIMULATED_SECONDS] [--large] (default 2 s). Needs a build (scripts/build.sh).
 # The machine should be otherwise idle: compare ratios measured in one run of this script.
 set -euo pipefail
@@ -30,14 +32,14 @@ runs=(
   "tait_screens_5mm|tait2005_screens.toml|$seconds|particles.dp=0.005"
 )
 if $large; then
-  runs+=("tank_200k|hydrostatic.toml|0.002|tank.length=2.0 tank.height=1.5 fill.depth=1.0 particles.dp=0.0031623 time.dt=0.000158 probes.pressure=[] scheme.solver_max_iterations=20000 output.sample_interval=0.002")
+  runs+=("tank_200k|hydrostatic.toml|0.0063|tank.length=2.0 tank.height=1.5 fill.depth=1.0 particles.dp=0.0031623 time.dt=0.000158 probes.pressure=[] scheme.solver_max_iterations=20000 output.sample_interval=0.002")
 fi
 echo "| case | dp (m) | particles | threads | particle-steps/s | wall s per simulated s | steps | scheme memory (B/particle) | peak resident (MB) |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for r in "${runs[@]}"; do
   IFS='|' read -r label file secs extra <<< "$r"
   sets=(--set time.end="$secs" --set output.snapshot_interval=0)
-  for kv in $extra; do sets+=(--set "$kv"); done
+  for kv in $extra ${SLOSHSPH_BENCH_SET:-}; do sets+=(--set "$kv"); done
   for t in 1 2; do
     d="$out/${label}_$t"
     OMP_NUM_THREADS=$t "$exe" run "$root/cases/$file" --out "$d" --threads "$t" --quiet "${sets[@]}" >/dev/null 2>&1
