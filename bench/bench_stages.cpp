@@ -1,7 +1,10 @@
 // Google Benchmark suite of the time-step stages (issue: speed). Each benchmark reports
 // particle-steps per second as the counter `particle_steps/s` (items processed per second).
 // Sizes: the Tait tank (L = 0.966 m, depth 0.119 m) at dp = 10, 7 and 5 mm, and a deep tank
-// scaled to about 20,000 and 200,000 particles for the cost-per-particle curve.
+// scaled from 2,000 to 200,000 particles for the cost-per-particle curve. The whole step
+// (IsphStep*), each stage of it (Stage*: SPS stress, prediction, density and PPE source, the
+// pressure solve with either preconditioner, correction), the WCSPH step, the neighbour-list
+// build and the porous drag.
 //   build/bench/bench_stages --benchmark_filter=IsphStep   (OMP_NUM_THREADS=1 or 2)
 #include <benchmark/benchmark.h>
 
@@ -11,8 +14,10 @@
 
 #include "sloshsph/geometry/scene.hpp"
 #include "sloshsph/io/case_reader.hpp"
+#include "sloshsph/physics/frame.hpp"
 #include "sloshsph/physics/porous.hpp"
 #include "sloshsph/run/simulation.hpp"
+#include "sloshsph/schemes/isph.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 
 namespace sloshsph {
@@ -86,6 +91,61 @@ void WcsphStepTait(benchmark::State& state) {
   run_steps(state, spec);
 }
 BENCHMARK(WcsphStepTait)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The stages of the ISPH step one at a time (IsphScheme::run_stage) on the Tait tank with screens
+// after 20 steps of its excitation: a scheme of its own is started on a copy of the particles and
+// takes two steps, and each timed stage then runs on a fresh copy of them (the copy is not timed)
+// with the solver data of the last step. The pressure solve starts from the pressures before that
+// step, as the step did, so its Krylov iterations are the step's.
+struct StageBench {
+  CaseSpec spec;
+  Particles particles, pressures_before;
+  IsphScheme scheme;
+  StepInput input;
+};
+
+StageBench stage_bench(double dp, const std::string& preconditioner) {
+  const CaseSpec spec = tait_case(dp, preconditioner);
+  Simulation sim(spec);
+  for (int k = 0; k < 20; ++k) sim.step();
+  StageBench b{spec, sim.particles(), {}, IsphScheme(spec, sim.scene().h), {}};
+  b.input.dt = spec.time.dt;
+  b.input.frame = frame_force(spec.fluid.gravity, sim.tank_motion());
+  b.scheme.initialise(b.particles, b.input.frame);
+  do {  // until a step that kept the particle order, so that the saved pressures still fit
+    b.pressures_before = b.particles;
+    b.scheme.step(b.particles, b.input);
+  } while (b.scheme.diagnostics().neighbours_rebuilt);
+  return b;
+}
+
+void time_stage(benchmark::State& state, IsphStage stage, const std::string& preconditioner = "multigrid") {
+  StageBench b = stage_bench(state.range(0) / 1000.0, preconditioner);
+  const Particles& start = stage == IsphStage::pressure_solve ? b.pressures_before : b.particles;
+  for (auto _ : state) {
+    state.PauseTiming();
+    Particles p = start;
+    state.ResumeTiming();
+    b.scheme.run_stage(stage, p, b.input);
+  }
+  state.counters["particle_steps/s"] = benchmark::Counter(
+      static_cast<double>(start.size()) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  if (stage == IsphStage::pressure_solve)
+    state.counters["krylov_iterations"] = b.scheme.diagnostics().solver_iterations;
+}
+
+void StageSpsStress(benchmark::State& s) { time_stage(s, IsphStage::sps_stress); }
+void StagePredict(benchmark::State& s) { time_stage(s, IsphStage::predict); }
+void StageDensityAndPpeSource(benchmark::State& s) { time_stage(s, IsphStage::density_and_ppe_source); }
+void StagePressureSolve(benchmark::State& s) { time_stage(s, IsphStage::pressure_solve); }
+void StagePressureSolveJacobi(benchmark::State& s) { time_stage(s, IsphStage::pressure_solve, "jacobi"); }
+void StageCorrectAndAdvance(benchmark::State& s) { time_stage(s, IsphStage::correct_and_advance); }
+BENCHMARK(StageSpsStress)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(StagePredict)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(StageDensityAndPpeSource)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(StagePressureSolve)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(StagePressureSolveJacobi)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(StageCorrectAndAdvance)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // Neighbour-list build alone on the particles of the Tait tank.
 void NeighbourBuild(benchmark::State& state) {

@@ -501,22 +501,48 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
 }
 
 template <class K>
+void IsphScheme::stage_with(const K& k, IsphStage stage, Particles& p, const StepInput& in) {
+  IsphData& d = data_;
+  switch (stage) {
+    case IsphStage::sps_stress:
+      sps_stress(k, p, neighbours_, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);
+      break;
+    case IsphStage::predict: {
+      if (scheme_.repulsive_walls && repulsion_strength_.size() != p.n_wall()) mark_repulsive_layer(p);
+      static const std::vector<double> none;
+      predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence,
+                       scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
+      predict_position(p, in.dt, d);
+      break;
+    }
+    case IsphStage::density_and_ppe_source:
+      density_and_ppe_source(k, p, neighbours_, in, scheme_.alpha, rho_ref_, scheme_.free_surface_threshold, d);
+      break;
+    case IsphStage::pressure_solve:
+      if (scheme_.pressure == PressureSolve::implicit_krylov) solve_pressure_implicit(k, p, in);
+      else solve_pressure_explicit(k, p, in);
+      break;
+    case IsphStage::correct_and_advance:
+      correct_and_advance(k, p, neighbours_, in.dt, rho0_, d);
+      break;
+  }
+}
+
+void IsphScheme::run_stage(IsphStage stage, Particles& p, const StepInput& in) {
+  with_kernel(kernel_type_, h_, [&](const auto& k) { stage_with(k, stage, p, in); });
+}
+
+template <class K>
 void IsphScheme::step_with(const K& k, Particles& p, const StepInput& in) {
   IsphData& d = data_;
   d.extra_acceleration.clear();
   if (in.extra) in.extra(p, d.extra_acceleration);                                // screens, eq. 2.28
   extrapolate_wall_velocity(k, p, neighbours_, p.velocity);                      // free slip, 2.4.3.1
-  if (scheme_.turbulence) sps_stress(k, p, neighbours_, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);  // 2.8-2.9
-  if (scheme_.repulsive_walls && repulsion_strength_.size() != p.n_wall()) mark_repulsive_layer(p);
-  static const std::vector<double> none;
-  predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence,  // eqs. 2.10, 3.18
-                   scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
-  predict_position(p, in.dt, d);                                                 // eq. 2.11
-  density_and_ppe_source(k, p, neighbours_, in, scheme_.alpha, rho_ref_,     // eqs. 2.12, 2.13, 2.20
-                         scheme_.free_surface_threshold, d);
-  if (scheme_.pressure == PressureSolve::implicit_krylov) solve_pressure_implicit(k, p, in);
-  else solve_pressure_explicit(k, p, in);                                        // eq. 2.18 + 2.19
-  correct_and_advance(k, p, neighbours_, in.dt, rho0_, d);                      // eqs. 2.14, 2.15
+  if (scheme_.turbulence) stage_with(k, IsphStage::sps_stress, p, in);          // eqs. 2.8-2.9
+  stage_with(k, IsphStage::predict, p, in);                                      // eqs. 2.10, 2.11, 3.18
+  stage_with(k, IsphStage::density_and_ppe_source, p, in);                       // eqs. 2.12, 2.13, 2.20
+  stage_with(k, IsphStage::pressure_solve, p, in);                               // eqs. 2.18 or 2.13, 2.19
+  stage_with(k, IsphStage::correct_and_advance, p, in);                          // eqs. 2.14, 2.15
 
   // Diagnostics, reduced in a fixed order so they do not depend on the thread count.
   Vec2 wall{};

@@ -46,6 +46,9 @@ struct IsphData {
   std::size_t memory_bytes() const;
 };
 
+// The stages of IsphScheme::step after the wall velocities, in their order.
+enum class IsphStage { sps_stress, predict, density_and_ppe_source, pressure_solve, correct_and_advance };
+
 class IsphScheme {
  public:
   IsphScheme(const CaseSpec& spec, double h);
@@ -56,6 +59,10 @@ class IsphScheme {
   // Before the first step: free-slip wall velocities, and the pressure (fluid and walls) that
   // holds the fluid at rest as it is placed, from one solve of the discrete PPE.
   void initialise(Particles& particles, const FrameForce& frame);
+
+  // One stage alone on `particles`, with the solver data the last step left (the stage
+  // benchmarks, bench/bench_stages.cpp); step() is these in order.
+  void run_stage(IsphStage stage, Particles& particles, const StepInput& input);
 
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
   const NeighbourList& neighbours() const { return neighbours_; }
@@ -68,6 +75,7 @@ class IsphScheme {
 
  private:
   template <class K> void step_with(const K& kernel, Particles& p, const StepInput& in);
+  template <class K> void stage_with(const K& kernel, IsphStage stage, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
   std::size_t ppe_row_length_bound(double support, const Particles& p, std::size_t i) const;
