@@ -213,9 +213,14 @@ bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, dou
   if (n <= mg.options.coarsest_rows || !(cell > 0.0)) return false;
   mg.fine_cell_x.resize(n);
   mg.fine_cell_y.resize(n);
+  // A position that is not finite (a run about to fail its finite-value check) or absurdly far
+  // has no cell: that step keeps the Jacobi preconditioner.
+  constexpr double kFarthestCell = 1e9;  // so that the cell keys (y * width + x) fit in 64 bits
   for (std::size_t i = 0; i < n; ++i) {
-    mg.fine_cell_x[i] = static_cast<std::int64_t>(std::floor(position[i].x / cell));
-    mg.fine_cell_y[i] = static_cast<std::int64_t>(std::floor(position[i].y / cell));
+    const double cx = std::floor(position[i].x / cell), cy = std::floor(position[i].y / cell);
+    if (!(std::abs(cx) < kFarthestCell && std::abs(cy) < kFarthestCell)) return false;
+    mg.fine_cell_x[i] = static_cast<std::int64_t>(cx);
+    mg.fine_cell_y[i] = static_cast<std::int64_t>(cy);
   }
   // Level k aggregates the rows of level k - 1 (the caller's matrix for k = 0). Levels are
   // addressed by index: emplace_back may move them.

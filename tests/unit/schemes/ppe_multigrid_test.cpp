@@ -163,3 +163,20 @@ TEST(PpeMultigrid, FallsBackToJacobiOnASmallSystem) {
 
 }  // namespace
 }  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+// A row at a position that is not finite (a run about to fail) gives no hierarchy: that step
+// keeps the Jacobi preconditioner rather than casting NaN to a cell index.
+TEST(PpeMultigrid, FallsBackToJacobiWhenAPositionIsNotFinite) {
+  const double dp = 0.01;
+  LatticePpe s = lattice_ppe(60, 20, dp);
+  s.position[17].x = std::nan("");
+  Multigrid mg;
+  EXPECT_FALSE(build_multigrid(s.A, s.position, 2.0 * dp, mg));
+  EXPECT_FALSE(mg.ready);
+}
+
+}  // namespace
+}  // namespace sloshsph
