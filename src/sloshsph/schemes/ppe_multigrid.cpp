@@ -77,10 +77,11 @@ void galerkin(const SparseRows& A, const std::vector<double>& inverse_diagonal, 
 #pragma omp for schedule(static)
       for (std::size_t I = 0; I < rows; ++I) {
         const auto row = static_cast<std::int32_t>(I);
-        std::size_t next = pass == 0 ? 0 : L.A.slot_begin[I];
+        const std::size_t begin = pass == 0 ? 0 : L.A.slot_begin[I];
+        std::size_t next = begin;
         auto enter = [&](std::size_t J) {
           stamp[J] = row;
-          slot[J] = static_cast<std::int32_t>(next - (pass == 0 ? 0 : L.A.slot_begin[I]));
+          slot[J] = static_cast<std::int32_t>(next - begin);
           if (pass == 1) {
             L.A.column[next] = static_cast<std::uint32_t>(J);
             L.A.value[next] = 0.0;
@@ -93,7 +94,7 @@ void galerkin(const SparseRows& A, const std::vector<double>& inverse_diagonal, 
           for (std::size_t k = A.slot_begin[i]; k < A.slot_end[i]; ++k) {
             const std::size_t J = L.parent[A.column[k]];
             if (stamp[J] != row) enter(J);
-            if (pass == 1) L.A.value[L.A.slot_begin[I] + slot[J]] += inverse_diagonal[i] * A.value[k];
+            if (pass == 1) L.A.value[begin + slot[J]] += inverse_diagonal[i] * A.value[k];
           }
         }
         if (pass == 0) length[I] = next;
@@ -102,10 +103,7 @@ void galerkin(const SparseRows& A, const std::vector<double>& inverse_diagonal, 
     }
   }
   L.inverse_diagonal.resize(rows);
-  for (std::size_t I = 0; I < rows; ++I) {
-    const double d = L.A.value[L.A.slot_begin[I]];
-    L.inverse_diagonal[I] = d != 0.0 ? 1.0 / d : 1.0;
-  }
+  for (std::size_t I = 0; I < rows; ++I) L.inverse_diagonal[I] = L.A.inverse_diagonal(I);
   L.b.resize(rows);
   L.x.resize(rows);
   L.r.resize(rows);
@@ -206,10 +204,7 @@ bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, dou
   std::vector<double>& inverse_diagonal = mg.fine_inverse_diagonal;
   inverse_diagonal.resize(n);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double d = A.slot_end[i] > A.slot_begin[i] ? A.value[A.slot_begin[i]] : 0.0;
-    inverse_diagonal[i] = d != 0.0 ? 1.0 / d : 1.0;  // as the Jacobi preconditioner's
-  }
+  for (std::size_t i = 0; i < n; ++i) inverse_diagonal[i] = A.inverse_diagonal(i);
   if (n <= mg.options.coarsest_rows || !(cell > 0.0)) return false;
   mg.fine_cell_x.resize(n);
   mg.fine_cell_y.resize(n);

@@ -83,8 +83,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
   const double b2 = blocked_sums<1>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
     for (std::size_t i = i0; i < i1; ++i) {
       acc[0] += b[i] * b[i];
-      const double d = A.slot_end[i] > A.slot_begin[i] ? A.value[A.slot_begin[i]] : 0.0;
-      w.inverse_diagonal[i] = d != 0.0 ? 1.0 / d : 1.0;
+      w.inverse_diagonal[i] = A.inverse_diagonal(i);
     }
   })[0];
   if (b2 == 0.0) {

@@ -27,6 +27,12 @@ struct SparseRows {
   std::vector<double> value;
 
   std::size_t rows() const { return slot_begin.size(); }
+  // 1 / A_rr (the diagonal is a row's first entry), or 1 for a row without one: the Jacobi
+  // preconditioner and the multigrid's smoother and restriction.
+  double inverse_diagonal(std::size_t r) const {
+    const double d = slot_end[r] > slot_begin[r] ? value[slot_begin[r]] : 0.0;
+    return d != 0.0 ? 1.0 / d : 1.0;
+  }
   // Row r times x.
   double row_times(std::size_t r, const std::vector<double>& x) const {
     double sum = 0.0;
