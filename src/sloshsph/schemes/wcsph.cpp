@@ -286,7 +286,10 @@ void rates(const K& k, const Particles& p, const NeighbourList& nl, const RateTe
           diffusion += Vj * (-F) * (2.0 * (rho_j - rho_i) + dot(gi + d.density_gradient[j], rij));
         a += grad_c * (-Vj * (pi + p.pressure[j]) / rho_i);
         if (t.viscosity_av > 0.0) {
-          a += grad * (t.viscosity_av / rho_i * Vj * dot(uij, rij) / r2);
+          // pi_ij grad W = F (u_ij . r_ij) r_ij / r^2 is bounded (|F| |u_ij|), but its direction is
+          // undefined for two particles at one point: such a pair (two particles pressed into
+          // the same tank corner by the repulsive walls, Faltinsen case at t = 32.1 s) adds nothing.
+          if (r2 > 0.0) a += grad * (t.viscosity_av / rho_i * Vj * dot(uij, rij) / r2);
         } else if (t.nu > 0.0) {
           const double rho_sum = rho_i + rho_j;
           a += uij * (t.nu * laplacian_weight(4.0 * m * t.rho0 / (rho_sum * rho_sum), F, r2, t.eta2));
