@@ -22,6 +22,7 @@
 // calm flow; the count of corrections is reported (column wall_contacts) so that a user sees
 // how often it acted. (Putting every close particle onto the contact surface instead squeezed
 // pairs together in the plate's case; this only moves particles that are already outside.)
+#include <cmath>
 #include <cstddef>
 
 #include "sloshsph/core/particles.hpp"
@@ -53,6 +54,9 @@ inline WallContact keep_fluid_in_tank(Particles& p, const ContainerDistance& dis
   const double contact = 0.25 * dp;
   WallContact out;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    // A non-finite position is not a contact: the driver's check reports it (it was counted
+    // as a correction before, so the Faltinsen WCSPH run's last row showed 2 contacts).
+    if (!std::isfinite(p.position[i].x) || !std::isfinite(p.position[i].y)) continue;
     if (distance(p.position[i]) >= contact + 1.5 * grid) continue;
     const double d = tank.signed_distance(p.position[i]);
     if (d >= contact) continue;

@@ -95,5 +95,16 @@ TEST(WallContact, FarFromTheWallsNothingHappens) {
   EXPECT_EQ(p.velocity[0].x, 3.0);
 }
 
+// A particle whose position is already NaN is left to the driver's non-finite check (exit 3
+// naming it): it is not a contact and adds no force.
+TEST(WallContact, NonFinitePositionIsNotAContact) {
+  const TankGeometry tank = tank_of("rectangle");
+  Particles p = one({std::nan(""), std::nan("")}, {0.0, -1.0});
+  const WallContact c = contact(tank, p);
+  EXPECT_EQ(c.corrected, 0u);
+  EXPECT_EQ(c.force_on_fluid.x, 0.0);
+  EXPECT_EQ(c.force_on_fluid.y, 0.0);
+}
+
 }  // namespace
 }  // namespace sloshsph
