@@ -4,7 +4,7 @@
 #  1. Installs the Debian packages (scripts/install-deps.sh).
 #  2. Builds the Release tree build/ (the program and the validation tests) and the sanitizer tree
 #     build-asan/ (AddressSanitizer + UndefinedBehaviorSanitizer, CMake preset `asan`: the unit
-#     tests, the program and the reader fuzz test; scripts/test-sanitizers.sh builds the same).
+#     tests and the readers' mutation test; scripts/test-sanitizers.sh also builds the program there).
 #  3. Runs in one ctest invocation (one summary line), one test per core:
 #       - the unit tests (label `unit`, with `unit-theory`: the gtest executables) and the
 #         mutation fuzz test of the readers, built with the sanitizers: any report fails the test;
@@ -52,11 +52,12 @@ fi
 # Release: only what the Release half runs (the program, the validation tests, and the theory
 # tests that `sloshsph validate` runs in cli.validate_theory).
 "$root/scripts/build.sh" sloshsph test_validation test_linear
-# Sanitizers: the unit tests, the program, the fuzz test.
+# Sanitizers: the gtest executables and the readers' mutation test (target unit_tests; the
+# program is not needed: its command-line tests run on the Release build).
 # shellcheck source=scripts/sanitizer-env.sh
 . "$root/scripts/sanitizer-env.sh"
 cmake --preset asan -S "$root" -B "$asan_build" > /dev/null
-cmake --build "$asan_build" -j "$jobs"
+cmake --build "$asan_build" -j "$jobs" --target unit_tests
 
 # One test tree made of both: the Release validation and command-line folders, and the gtest
 # executables and fuzz folder of the sanitizer tree (the gtest include files hold absolute paths).

@@ -27,7 +27,8 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/LU>
 
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/schemes/ppe_solver.hpp"

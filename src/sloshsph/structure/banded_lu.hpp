@@ -1,5 +1,5 @@
 #pragma once
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <vector>
 
 // LU factorisation with partial pivoting of a general banded matrix (Golub & Van Loan, "Matrix

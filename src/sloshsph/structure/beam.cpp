@@ -1,5 +1,7 @@
 #include "sloshsph/structure/beam.hpp"
 
+#include <Eigen/Eigenvalues>  // the modal analysis (GeneralizedSelfAdjointEigenSolver)
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

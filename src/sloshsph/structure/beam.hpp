@@ -1,6 +1,8 @@
 #pragma once
-#include <Eigen/Dense>
-#include <Eigen/Sparse>
+// Eigen's core and sparse containers only: the decompositions are in beam.cpp (this header reaches
+// every file that includes run/simulation.hpp; Dense + Sparse cost about 5 s of compiling each).
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "sloshsph/core/state_io.hpp"

@@ -1,6 +1,7 @@
 // Element-level checks of the geometrically exact beam element (beam_element.hpp) and of the load
 // helpers (beam_loads.hpp): derivatives against central finite differences, invariance under rigid
 // motions, and the exactness of the discrete gradient used by the energy-conserving integrator.
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include <algorithm>
