@@ -13,7 +13,7 @@
 #         sanitizers their simulations take 760 s instead of about 170 s, more than CI's budget
 #         allows (scripts/test-sanitizers.sh runs them too);
 #       - the physics validation (label `validation`) on the Release build.
-#     About 27 minutes on 2 cores from scratch.
+#     About 30 minutes on 2 cores from scratch (docs/validation/notes.md, "Hostile input and sanitizers").
 #
 # Options (anything else goes to ctest, e.g. -R case_reader):
 #   --long           the `long` label on the Release build instead (hours; no sanitizers)
