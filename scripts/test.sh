@@ -10,8 +10,8 @@
 #         mutation fuzz test of the readers, built with the sanitizers: any report fails the test;
 #       - the command-line tests (tests/cli: exit codes, the hostile-input corpus, runs, sweeps,
 #         interrupt and resume, reports; label `unit`) on the Release program: under the
-#         sanitizers their simulations take 760 s instead of about 170 s, more than CI's budget
-#         allows (scripts/test-sanitizers.sh runs them too);
+#         sanitizers they take about 1,080 s of test time instead of about 345 s, more than CI's
+#         budget allows (scripts/test-sanitizers.sh runs them too);
 #       - the physics validation (label `validation`) on the Release build.
 #     About 30 minutes on 2 cores from scratch (docs/validation/notes.md, "Hostile input and sanitizers").
 #

@@ -24,10 +24,6 @@ double mean_over(const RunResult& r, const std::string& column, double from, dou
   return n > 0 ? sum / n : NAN;
 }
 
-double max_of(const RunResult& r, const std::string& column) {
-  const std::vector<double>& v = r[column];
-  return *std::max_element(v.begin(), v.end());
-}
 
 // cases/hydrostatic_plate.toml: a 1 m water column on a 2 m plate clamped at both ends (WCSPH,
 // dp = 20 mm, 1 s of damped settling of fluid and plate together, then 0.5 s). Reference: the clamped-clamped beam under the uniform load of the water and
@@ -53,8 +49,8 @@ TEST(Validation, HydrostaticPlateDeflectsAsTheClampedBeam) {
                  "clamped-clamped beam, q L^4/(384 EI) + q L^2/(8 kGA), q = water + plate weight", "m");
   check_relative("vertical load on the plate / weight of water above it", load / (q_water * L), 1.0, 0.02,
                  "hydrostatics: rho g H L");
-  check_at_most("particles that crossed the plate", max_of(r, "plate_crossings:floor"), 0.0, "none may pass");
-  check_at_most("particles inside the plate", max_of(r, "plate_inside:floor"), 0.0, "none may sit inside");
+  check_at_most("particles that crossed the plate", r.max("plate_crossings:floor"), 0.0, "none may pass");
+  check_at_most("particles inside the plate", r.max("plate_inside:floor"), 0.0, "none may sit inside");
   check_at_most("particles leaked from the tank", static_cast<double>(r.leaked), 0.0, "none may leave");
 }
 

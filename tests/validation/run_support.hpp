@@ -2,6 +2,7 @@
 // Runs a case in memory and keeps its time series, for the validation tests.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -23,6 +24,11 @@ struct RunResult {
   double wall_seconds = 0.0;
   std::size_t steps = 0;
   const std::vector<double>& operator[](const std::string& c) const { return series.at(c); }
+  // The largest sample of column c (counts such as plate_crossings or plate_inside).
+  double max(const std::string& c) const {
+    const std::vector<double>& v = series.at(c);
+    return *std::max_element(v.begin(), v.end());
+  }
 };
 
 // Reads the case file at `path` (run_case_in_memory: cases/<name>) with the overrides, runs it to time.end sampling every
