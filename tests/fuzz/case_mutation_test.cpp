@@ -93,6 +93,7 @@ const std::vector<std::string> kTomlFragments = {
     "[[screens]]\nname = \"s9\"\nx = 0.2\nsolidity = 0.5\n",
     "[[screens]]\nname = \"s8\"\nfrom = [0.1, 0.0]\nto = [0.3, 0.2]\nmodel = \"explicit\"\nslat_height = 0.005\nslat_gap = 0.007\n",
     "[[probes.gauge]]\nname = \"g9\"\nx = 0.1\n", "[[probes.pressure]]\nname = \"p9\"\nx = 0.1\ny = 0.05\n",
+    "[[probes.pressure]]\nname = \"p8\"\nx = 0.1\ny = 0.05\nto = [0.1, 0.15]\n",
     "[structure]\nmass = 100.0\nfrequency = 0.8\ndamping_ratio = 0.02\n",
     "[structure]\nmass = 1e-300\nstiffness = 1e300\ndamping = 0\nground = \"excitation\"\n",
     "[structure.load]\ntype = \"noise\"\ntarget_peak_mg = 10\n",

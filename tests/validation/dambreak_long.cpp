@@ -36,43 +36,67 @@ std::string refdata(const std::string& file) { return std::string(SLOSHSPH_SOURC
 
 // Buchner (2002) wall pressure at P1 (0.16 m up the impact wall), p/(rho g H) against
 // t sqrt(g/H), H = 0.6 m (data/refdata/buchner_2002_dambreak_pressure). cases/dambreak_buchner
-// at its dp = 10 mm (H/dp = 60). The bar: the first peak (the impact, data: 0.687 at
-// t* = 2.77; taken as the maximum before t* = 4.5, before the plateau ends) within 25% in value and
-// 10% in time. Measured (docs/validation.md): both schemes rise at t* = 2.8 but only to
-// 0.45 (ISPH) and 0.43 (WCSPH) by t* = 4.2-4.5: this test fails.
+// at its dp = 10 mm (H/dp = 60), each scheme with its case's walls. The bar: the first
+// peak (the impact) within 25% in value and 10% in time. The impact peak is the maximum within
+// 0.5 of t sqrt(g/H) after the signal first exceeds 0.1 (data: 0.687 at 2.77, the same as the
+// maximum before the re-impact); a later fluctuation of the simulated plateau does not count.
+// Asserted on the point probe P1. Recorded beside it, not asserted: the face P1_face from
+// 0.07 to 0.16 m, the lowered sensor of Greco / Adami et al. (2012) as the cases explain.
+// Measured (docs/validation.md): the point probe rises late and low in both schemes (fails).
+struct ImpactPeak {
+  double time = NAN;   // t sqrt(g/H)
+  double value = NAN;  // p / (rho g H)
+};
+
+ImpactPeak impact_peak(const std::vector<double>& t, const std::vector<double>& p) {
+  constexpr double kRise = 0.1, kWindow = 0.5;
+  ImpactPeak peak;
+  double t_rise = NAN;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (std::isnan(t_rise) && p[i] > kRise) t_rise = t[i];
+    if (std::isnan(t_rise) || t[i] > t_rise + kWindow) continue;
+    if (std::isnan(peak.value) || p[i] > peak.value) peak = {t[i], p[i]};
+  }
+  return peak;
+}
+
 TEST(ValidationLong, DamBreakWallPressureBuchner) {
   const auto data = read_csv_pairs(refdata("buchner_2002_dambreak_pressure/exp_pressure_sensor_P1.csv"));
   const double H = 0.6, g = 9.81, rho = 1000.0, scale = std::sqrt(g / H);
-  const std::string source =
-      "Buchner (2002), sensor P1, data/refdata/buchner_2002_dambreak_pressure/exp_pressure_sensor_P1.csv: "
-      "first peak 0.687 at t sqrt(g/H) = 2.77";
-  testing::Sample peak_data{0.0, -1.0};
-  for (const auto& d : data)
-    if (d.t < 4.5 && d.x > peak_data.x) peak_data = d;
+  std::vector<double> data_t, data_p;
+  for (const auto& d : data) {
+    data_t.push_back(d.t);
+    data_p.push_back(d.x);
+  }
+  const ImpactPeak reference = impact_peak(data_t, data_p);
+  std::ostringstream source;
+  source << "Buchner (2002), sensor P1 (centre 0.16 m), data/refdata/buchner_2002_dambreak_pressure/"
+            "exp_pressure_sensor_P1.csv: impact peak "
+         << reference.value << " at t sqrt(g/H) = " << reference.time;
   for (const std::string scheme : {"isph", "wcsph"}) {
     const auto r = testing::run_case_in_memory(scheme == "isph" ? "dambreak_buchner.toml" : "dambreak_buchner_wcsph.toml",
                                                {"output.snapshot_interval=0"});
     const std::string label = scheme == "isph" ? "ISPH" : "WCSPH";
-    testing::Sample peak{0.0, -1.0};
-    std::vector<double> t_star, p_star;
-    for (std::size_t i = 0; i < r["time"].size(); ++i) {
-      const double t = r["time"][i] * scale, p = r["p:P1"][i] / (rho * g * H);
-      t_star.push_back(t);
-      p_star.push_back(p);
-      if (t < 4.5 && p > peak.x) peak = {t, p};
+    check_at_most("particles leaked from the tank by 2 s, " + label, static_cast<double>(r.leaked), 0.0, "none may leave");
+    for (const std::string probe : {"P1", "P1_face"}) {
+      const bool point = probe == "P1";
+      std::vector<double> t_star, p_star;
+      for (std::size_t i = 0; i < r["time"].size(); ++i) {
+        t_star.push_back(r["time"][i] * scale);
+        p_star.push_back(r["p:" + probe][i] / (rho * g * H));
+      }
+      const ImpactPeak peak = impact_peak(t_star, p_star);
+      const std::string where = point ? "point probe at 0.16 m" : "face 0.07-0.16 m (Greco's lowered sensor)";
+      report("buchner_" + probe + "_impact_peak_" + scheme, peak.value);
+      report("buchner_" + probe + "_impact_peak_time_" + scheme, peak.time);
+      testing::check({"impact peak at P1, p/(rho g H), " + where + ", " + label, "", peak.value,
+                      testing::Tolerance::relative, reference.value, 0.25, source.str(), point});
+      testing::check({"time of the impact peak, t sqrt(g/H), " + where + ", " + label, "", peak.time,
+                      testing::Tolerance::relative, reference.time, 0.10, source.str(), point});
+      testing::record_curve({(point ? "p1_" : "p1_face_") + scheme,
+                             "Dam-break wall pressure at P1, " + where + ", " + label, "t sqrt(g/H)",
+                             "p / (rho g H)", t_star, p_star, "Buchner (2002), experiment", data_t, data_p});
     }
-    report("buchner_p1_first_peak_" + scheme, peak.x);
-    report("buchner_p1_first_peak_time_" + scheme, peak.t);
-    check_relative("first pressure peak at P1, p/(rho g H), maximum before t sqrt(g/H) = 4.5, " + label, peak.x,
-                   peak_data.x, 0.25, source);
-    check_relative("time of that peak, t sqrt(g/H), " + label, peak.t, peak_data.t, 0.10, source);
-    std::vector<double> data_t, data_p;
-    for (const auto& d : data) {
-      data_t.push_back(d.t);
-      data_p.push_back(d.x);
-    }
-    testing::record_curve({"p1_" + scheme, "Dam-break wall pressure at P1 (0.16 m up the impact wall), " + label,
-                           "t sqrt(g/H)", "p / (rho g H)", t_star, p_star, "Buchner (2002), experiment", data_t, data_p});
   }
 }
 

@@ -14,6 +14,8 @@ run without --long. Checked:
   commit and date it came from;
 - an invocation keeps what another one wrote into results.json while it ran (`Fake.Meanwhile`,
   when the marker file exists, writes a result for FakeLong.NotRun as a parallel invocation would);
+- a stored result is dropped when its test left a label the build tree has, and kept when the
+  build tree has no test of its label (that test executable was not built);
 - `--no-run` rewrites the page from results.json alone.
 """
 import json
@@ -126,6 +128,18 @@ def main():
         check(code == 0 and stored["FakeLong.NotRun"].get("date") == "elsewhere"
               and stored["Fake.Meanwhile"]["status"] == "passed",
               "a result written by another invocation during the run is kept beside this run's")
+
+        results_path = os.path.join(docs, "validation", "results.json")
+        d = json.load(open(results_path))
+        d["tests"]["Theory.NotBuilt"] = dict(label="unit-theory", status="passed", seconds=1.0, commit="abc",
+                                             date="earlier", checks=[], figures=[])
+        d["tests"]["Fake.Removed"] = dict(label="validation", status="passed", seconds=1.0, commit="abc",
+                                          date="earlier", checks=[], figures=[])
+        json.dump(d, open(results_path, "w"))
+        code, log = run(build, docs, "--filter", "^Fake\\.Passes$")
+        stored = json.load(open(results_path))["tests"]
+        check("Theory.NotBuilt" in stored, "a stored test of a label absent from the build tree (not built) is kept")
+        check("Fake.Removed" not in stored, "a stored test missing from its label's tests in the build tree is dropped")
 
         os.remove(os.path.join(docs, "validation.md"))
         code, log = run(build, docs, "--no-run")

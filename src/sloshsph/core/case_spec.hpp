@@ -222,6 +222,8 @@ struct GaugeSpec {
 struct PressureProbeSpec {
   std::string name;
   Vec2 position;   // m: x from the left wall, y above the lowest point of the bottom
+  std::optional<Vec2> face_end;  // m: with it, the probe is a sensor face from `position` to here
+                                 // and reads the mean pressure over it (observe/probes.hpp)
 };
 
 // The leading edge of a surge along the floor (dam-break front): the furthest fluid particle

@@ -22,15 +22,18 @@ void check_probes(const CaseSpec& spec, const TankGeometry& tank) {
     }
   }
   for (std::size_t k = 0; k < spec.pressure_probes.size(); ++k) {
-    const std::string key = "probes.pressure." + std::to_string(k) + ".x";
-    const Vec2 p = spec.pressure_probes[k].position;
-    // A probe may sit on the wall surface or in the first wall layer (thesis 5.5.1), not beyond.
-    if (tank.signed_distance(p) < -spec.particles.dp || p.y > tank.y_top) {
+    const auto& probe = spec.pressure_probes[k];
+    // A probe may sit on the wall surface or in the first wall layer (thesis 5.5.1), not beyond;
+    // so may both ends of a sensor face.
+    const auto outside = [&](Vec2 p) { return tank.signed_distance(p) < -spec.particles.dp || p.y > tank.y_top; };
+    const auto fail = [&](const std::string& field, Vec2 p, const char* what) {
+      const std::string key = "probes.pressure." + std::to_string(k) + "." + field;
       std::ostringstream m;
-      m << "pressure probe '" << spec.pressure_probes[k].name << "' at (" << p.x << ", " << p.y
-        << ") m is outside the tank";
+      m << "pressure probe '" << probe.name << "'" << what << " (" << p.x << ", " << p.y << ") m is outside the tank";
       throw InputError(spec.where(key), key, m.str());
-    }
+    };
+    if (outside(probe.position)) fail("x", probe.position, " at");
+    if (probe.face_end && outside(*probe.face_end)) fail("to", *probe.face_end, ": the end of its face,");
   }
 }
 

@@ -251,6 +251,7 @@ void read_probes(TableReader& r, CaseSpec& spec) {
     ps.name = p.string("name");
     check_name(p, "name", ps.name, names);
     ps.position = {p.number("x"), p.number("y")};
+    ps.face_end = p.optional_point("to");
     p.finish();
     spec.pressure_probes.push_back(ps);
   }
@@ -914,8 +915,11 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (s.excitation.type != ExcitationType::none) root.insert("excitation", excitation_table(s.excitation));
   toml::array gauges, pressures;
   for (const auto& g : s.gauges) gauges.push_back(toml::table{{"name", g.name}, {"x", g.x}});
-  for (const auto& p : s.pressure_probes)
-    pressures.push_back(toml::table{{"name", p.name}, {"x", p.position.x}, {"y", p.position.y}});
+  for (const auto& p : s.pressure_probes) {
+    toml::table probe{{"name", p.name}, {"x", p.position.x}, {"y", p.position.y}};
+    if (p.face_end) probe.insert("to", toml::array{p.face_end->x, p.face_end->y});
+    pressures.push_back(probe);
+  }
   toml::array fronts;
   for (const auto& f : s.fronts)
     fronts.push_back(toml::table{{"name", f.name}, {"band", f.band}, {"direction", f.rightward ? "right" : "left"}});

@@ -69,6 +69,19 @@ double pressure_at(const K& k, const Particles& p, const CellGrid& grid, Vec2 po
   return num / den;
 }
 
+// A pressure sensor with a face (a transducer or force panel): the mean of pressure_at over the
+// segment from `a` to `b`, sampled at evenly spaced points no more than `spacing` apart, ends
+// included. A dry part of the face reads 0 (atmospheric), as it would on the real sensor.
+template <class K>
+double pressure_on_face(const K& k, const Particles& p, const CellGrid& grid, Vec2 a, Vec2 b, double spacing) {
+  const double length = norm(b - a);
+  const int intervals = std::max(1, static_cast<int>(std::ceil(length / spacing)));
+  double sum = 0.0;
+  for (int i = 0; i <= intervals; ++i)
+    sum += pressure_at(k, p, grid, a + (b - a) * (static_cast<double>(i) / intervals));
+  return sum / (intervals + 1);
+}
+
 // Surge front (dam-break tip): the largest (rightward) or smallest x of the fluid particles at
 // most `band` above y_floor, moved dp/2 outward (the edge of that particle's own volume).
 // Returns NaN when no fluid particle lies in the band.

@@ -17,6 +17,18 @@
 
 namespace sloshsph {
 
+namespace {
+
+// A pressure probe's reading: a point, or the mean over its face sampled every dp/4.
+template <class K>
+double read_pressure_probe(const K& k, const Particles& p, const CellGrid& grid, const PressureProbeSpec& probe,
+                           double dp) {
+  if (!probe.face_end) return pressure_at(k, p, grid, probe.position);
+  return pressure_on_face(k, p, grid, probe.position, *probe.face_end, 0.25 * dp);
+}
+
+}  // namespace
+
 double first_sloshing_omega(const CaseSpec& spec) {
   if (spec.tank.shape == "rectangle")
     return rectangular_sloshing_omega(spec.tank.length, spec.fill.depth, spec.fluid.gravity);  // exact
@@ -347,9 +359,10 @@ double Simulation::surface_height(std::size_t gauge) const {
 double Simulation::probe_pressure(std::size_t probe) const {
   CellGrid grid;
   grid.build(scene_.particles.position, 0, scene_.particles.size(), 2.0 * scene_.h);
-  const Vec2 at = spec_.pressure_probes[probe].position;
-  return with_kernel(spec_.particles.kernel, scene_.h,
-                     [&](const auto& k) { return pressure_at(k, scene_.particles, grid, at); });
+  const PressureProbeSpec& spec = spec_.pressure_probes[probe];
+  return with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
+    return read_pressure_probe(k, scene_.particles, grid, spec, spec_.particles.dp);
+  });
 }
 
 std::vector<double> Simulation::sample() {
@@ -361,7 +374,8 @@ std::vector<double> Simulation::sample() {
     CellGrid grid;
     grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
     with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
-      for (const auto& probe : spec_.pressure_probes) v.push_back(pressure_at(k, p, grid, probe.position));
+      for (const auto& probe : spec_.pressure_probes)
+        v.push_back(read_pressure_probe(k, p, grid, probe, spec_.particles.dp));
     });
   }
   for (const auto& f : spec_.fronts) {
