@@ -24,7 +24,6 @@ double mean_over(const RunResult& r, const std::string& column, double from, dou
   return n > 0 ? sum / n : NAN;
 }
 
-
 // cases/hydrostatic_plate.toml: a 1 m water column on a 2 m plate clamped at both ends (WCSPH,
 // dp = 20 mm, 1 s of damped settling of fluid and plate together, then 0.5 s). Reference: the clamped-clamped beam under the uniform load of the water and
 // of the plate's own weight, w = q L^4 / (384 E I) + q L^2 / (8 k G A) (Timoshenko's shear part,
