@@ -379,7 +379,9 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     s["response"] = response;
   if (spec.structure && !series.columns.empty()) {
     // RMS and peak response, and for noise loads the admittance and effective damping.
-    const StructureSeries ss = structure_series(column_names(sim), series.columns);
+    StructureSeries ss = structure_series(column_names(sim), series.columns);
+    if (spec.structure->ground_from_excitation)  // the same ground motion for the structure without tanks
+      for (const double t : ss.time) ss.ground_acceleration.push_back(sim.base().at(t).acceleration.x);
     s["structure"] = structure_summary(ss, *spec.structure);
     if (auto a = structure_admittance(ss, *spec.structure))
       write_file_atomic((fs::path(dir) / "admittance.csv").string(), admittance_csv(*a));

@@ -106,6 +106,34 @@ StructureSeries structure_series(const std::vector<std::string>& names, const st
   return s;
 }
 
+StructureAloneResponse structure_alone_response(const StructureSeries& s, const StructureSpec& spec) {
+  StructureAloneResponse out;
+  if (s.time.empty()) return out;
+  const bool ground = !s.ground_acceleration.empty();
+  auto ground_at = [&](std::size_t k) { return ground ? s.ground_acceleration[k] : 0.0; };
+  Sdof sdof(sdof_spec(spec));
+  sdof.set_state(spec.initial_displacement, spec.initial_velocity, s.F_e[0], ground_at(0));
+  const double max_substep = 0.01 / sdof.spec().angular_frequency();
+  auto record = [&] {
+    out.x.push_back(sdof.displacement());
+    out.a.push_back(sdof.absolute_acceleration());
+  };
+  record();
+  for (std::size_t k = 1; k < s.time.size(); ++k) {
+    const double interval = s.time[k] - s.time[k - 1];
+    if (interval > 0.0) {  // a repeated row (the last of a failed run) adds no step
+      const int substeps = std::max(1, static_cast<int>(std::ceil(interval / max_substep)));
+      for (int j = 1; j <= substeps; ++j) {
+        const double w = static_cast<double>(j) / substeps;  // Newmark takes the load at the step's end
+        sdof.step(interval / substeps, (1.0 - w) * s.F_e[k - 1] + w * s.F_e[k],
+                  (1.0 - w) * ground_at(k - 1) + w * ground_at(k));
+      }
+    }
+    record();
+  }
+  return out;
+}
+
 std::optional<StructureAdmittance> structure_admittance(const StructureSeries& s, const StructureSpec& spec,
                                                         const StructureSummaryOptions& o) {
   if (spec.load.type != StructureLoadType::noise) return std::nullopt;
@@ -142,6 +170,41 @@ std::optional<StructureAdmittance> structure_admittance(const StructureSeries& s
   return a;
 }
 
+namespace {
+
+// summary.json "structure_without_tank", and the run's ratios to it in j's "displacement" and
+// "acceleration" (filled before this is called).
+nlohmann::json without_tank_summary(const StructureSeries& s, const StructureSpec& spec, const StructureSummaryOptions& o,
+                                    nlohmann::json& j) {
+  StructureSeries alone = s;
+  const StructureAloneResponse r = structure_alone_response(s, spec);
+  alone.x_s = r.x;
+  alone.a_s = r.a;
+  alone.eta.clear();
+  const std::vector<double> x = after(s.time, alone.x_s, o.skip_seconds);
+  const std::vector<double> acc = after(s.time, alone.a_s, o.skip_seconds);
+  nlohmann::json w;
+  w["method"] = "the structure alone under this run's recorded load, Newmark average acceleration";
+  w["displacement"] = rms_and_peak(x, "m");
+  w["acceleration"] = rms_and_peak(acc, "m_s2");
+  w["acceleration"]["rms_milli_g"] = rms(acc) / kMilliG;
+  w["acceleration"]["peak_milli_g"] = peak_abs(acc) / kMilliG;
+  if (const auto a = structure_admittance(alone, spec, o)) w["effective_damping_ratio"] = a->effective_damping;
+  // Ratios only where the structure alone moves (a zero load leaves nothing to compare with).
+  auto ratio = [](double run, double without) { return without > 0.0 ? nlohmann::json(run / without) : nlohmann::json(); };
+  for (const char* quantity : {"displacement", "acceleration"}) {
+    const char* unit = std::string(quantity) == "displacement" ? "m" : "m_s2";
+    const std::string rms_key = std::string("rms_") + unit, peak_key = std::string("peak_") + unit;
+    j[quantity]["rms_ratio_to_without_tank"] =
+        ratio(j[quantity][rms_key].get<double>(), w[quantity][rms_key].get<double>());
+    j[quantity]["peak_ratio_to_without_tank"] =
+        ratio(j[quantity][peak_key].get<double>(), w[quantity][peak_key].get<double>());
+  }
+  return w;
+}
+
+}  // namespace
+
 nlohmann::json structure_summary(const StructureSeries& s, const StructureSpec& spec,
                                  const StructureSummaryOptions& o) {
   const SdofSpec sdof = sdof_spec(spec);
@@ -168,6 +231,7 @@ nlohmann::json structure_summary(const StructureSeries& s, const StructureSpec& 
   j["acceleration"]["rms_milli_g"] = rms(acc) / kMilliG;
   j["acceleration"]["peak_milli_g"] = peak_abs(acc) / kMilliG;
   j["load"] = {{"type", load_name(spec.load.type)}, {"rms_N", rms(f)}, {"peak_N", peak_abs(f)}};
+  j["structure_without_tank"] = without_tank_summary(s, spec, o, j);
 
   if (spec.load.type == StructureLoadType::noise) {
     const NoiseLoadLevel level = noise_load_level(spec);
