@@ -25,6 +25,25 @@ struct Crest {
   std::vector<double> t, gauge;
 };
 
+// Checks that no particle left the tank in the run (`duration` names it), and returns the
+// averages of the last `cycles` excitation cycles of the gauge "right" after the 5 Hz
+// zero-phase filter (thesis 2.6.3.1), reported under `key`.
+Crest gauge_crest(const testing::RunResult& r, double omega, int cycles, const std::string& duration,
+                  const std::string& key) {
+  check_at_most("particles leaked from the tank in " + duration + ", " + key, static_cast<double>(r.leaked), 0.0,
+                "none may leave");
+  Crest c;
+  c.t = r["time"];
+  c.gauge = lowpass_zero_phase(r["eta:right"], c.t[1] - c.t[0], 5.0);
+  const SteadyAmplitude a = steady_state_amplitude(c.t, c.gauge, 2.0 * std::numbers::pi / omega, cycles);
+  c.avg_max = a.avg_max;
+  c.avg_min = a.avg_min;
+  report(key + "_avg_max_m", a.avg_max);
+  report(key + "_avg_min_m", a.avg_min);
+  report(key + "_wall_seconds", r.wall_seconds);
+  return c;
+}
+
 // cases/tait2005_screens.toml at the largest amplitude of Tait et al. (2005), X0/L = 0.031
 // (X0 = 29.9 mm), beta = 1.01, 30 s; averages of the last 8 excitation cycles (15.5-30 s) of the
 // gauge after the 5 Hz zero-phase filter (thesis 2.6.3.1).
@@ -34,19 +53,7 @@ Crest tait_at_x0l_0031(const std::string& label, const std::vector<std::string>&
   double omega = 0.0;
   const auto r = run_case_in_memory("tait2005_screens.toml", overrides,
                                     [&](const Simulation& s) { omega = s.spec().excitation.omega; });
-  check_at_most("particles leaked from the tank in 30 s, " + label, static_cast<double>(r.leaked), 0.0,
-                "none may leave");
-  const double period = 2.0 * std::numbers::pi / omega;
-  Crest c;
-  c.t = r["time"];
-  c.gauge = lowpass_zero_phase(r["eta:right"], c.t[1] - c.t[0], 5.0);
-  const SteadyAmplitude a = steady_state_amplitude(c.t, c.gauge, period, 8);
-  c.avg_max = a.avg_max;
-  c.avg_min = a.avg_min;
-  report("tait_x0l0031_" + label + "_avg_max_m", a.avg_max);
-  report("tait_x0l0031_" + label + "_avg_min_m", a.avg_min);
-  report("tait_x0l0031_" + label + "_wall_seconds", r.wall_seconds);
-  return c;
+  return gauge_crest(r, omega, 8, "30 s", "tait_x0l0031_" + label);
 }
 
 // Reference: the explicit slats (5 mm slats, 7 mm gaps, 1 mm thick, as rigid wall particles at
@@ -74,18 +81,7 @@ Crest biswal(const std::string& file, const std::string& label, const std::vecto
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   double omega = 0.0;
   const auto r = run_case_in_memory(file, overrides, [&](const Simulation& s) { omega = s.spec().excitation.omega; });
-  check_at_most("particles leaked from the tank in 15 s, " + label, static_cast<double>(r.leaked), 0.0,
-                "none may leave");
-  Crest c;
-  c.t = r["time"];
-  c.gauge = lowpass_zero_phase(r["eta:right"], c.t[1] - c.t[0], 5.0);
-  const SteadyAmplitude a = steady_state_amplitude(c.t, c.gauge, 2.0 * std::numbers::pi / omega, 10);
-  c.avg_max = a.avg_max;
-  c.avg_min = a.avg_min;
-  report("biswal_" + label + "_avg_max_m", a.avg_max);
-  report("biswal_" + label + "_avg_min_m", a.avg_min);
-  report("biswal_" + label + "_wall_seconds", r.wall_seconds);
-  return c;
+  return gauge_crest(r, omega, 10, "15 s", "biswal_" + label);
 }
 
 // Reference: the baffles as rigid wall particles (the thesis's "MM" model, dp = 5 mm); the Ergun

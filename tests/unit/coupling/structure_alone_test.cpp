@@ -128,6 +128,19 @@ StructureSeries building_alone(const StructureSpec& spec, double duration, doubl
   return out;
 }
 
+// The thesis building (4.4.2.2) with no tank under its 10 milli-g noise load (seed 2023).
+StructureSpec thesis_building_alone_under_noise() {
+  StructureSpec spec;
+  spec.mass = 7.0e7;
+  spec.damping = 1.18e6;
+  spec.stiffness = 4.96e7;
+  spec.tanks = 0;
+  spec.load.type = StructureLoadType::noise;
+  spec.load.seed = 2023;
+  spec.load.target_peak_mg = 10.0;
+  return spec;
+}
+
 TEST(StructureAlone, NoiseEffectiveDampingIsTheStructuralDamping) {
   // Thesis 4.4.2: M = 70,000 t, C = 1.18e6 N s/m, K = 4.96e7 N/m (zeta = 1.00%, f_n = 0.1339 Hz),
   // one hour of band-limited noise (0.05-0.5 Hz) scaled to a mean hourly peak of 10 milli-g.
@@ -143,14 +156,7 @@ TEST(StructureAlone, NoiseEffectiveDampingIsTheStructuralDamping) {
   //    (signals/white_noise.hpp) within 5% (same error budget).
   //  * The largest peak of one realisation scatters about the mean peak by ~10% (Gumbel
   //    spread pi / sqrt(6) / sqrt(2 ln(nu T)) sigma over the mean 3.7 sigma): within 30%.
-  StructureSpec spec;
-  spec.mass = 7.0e7;
-  spec.damping = 1.18e6;
-  spec.stiffness = 4.96e7;
-  spec.tanks = 0;
-  spec.load.type = StructureLoadType::noise;
-  spec.load.seed = 2023;
-  spec.load.target_peak_mg = 10.0;
+  const StructureSpec spec = thesis_building_alone_under_noise();
   const StructureSeries s = building_alone(spec, 3600.0, 0.01);
   const nlohmann::json j = structure_summary(s, spec);
   const double zeta = j["admittance"]["effective_damping_ratio"].get<double>();
@@ -185,14 +191,7 @@ TEST(StructureAlone, WithoutTankResponseReproducesTheStructureFromItsSampledLoad
   // and sampled every 0.05 s, 600 s of the thesis building's 10 milli-g noise. Tolerances: the
   // response from the sampled (linearly interpolated) load within 0.1% of the largest value,
   // the RMS and peak ratios within 0.1% of 1 (run/structure_summary.hpp); zeta_eff equal.
-  StructureSpec spec;
-  spec.mass = 7.0e7;
-  spec.damping = 1.18e6;
-  spec.stiffness = 4.96e7;
-  spec.tanks = 0;
-  spec.load.type = StructureLoadType::noise;
-  spec.load.seed = 2023;
-  spec.load.target_peak_mg = 10.0;
+  const StructureSpec spec = thesis_building_alone_under_noise();
   const StructureSeries s = building_alone(spec, 600.0, 0.01);
   const StructureAloneResponse r = structure_alone_response(s, spec);
   ASSERT_EQ(r.x.size(), s.time.size());
