@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -104,14 +105,17 @@ struct Table33 {
 // ratio R = (eta_2 - eta_1) / (eta_3 - eta_2) for each.
 // Tolerances (the issue's): 0 < R < 1 (monotonic convergence) for both; every average within
 // 10% of Table 3.3. (Table 3.3's own circular Avg. Min. has R = 1.111.)
-void check_convergence(const std::string& label, const std::string& file, const Table33& table) {
+// `table` empty: a study of our own (no Table 3.3 comparison); `extra` overrides for every dp.
+void check_convergence(const std::string& label, const std::string& file, const std::optional<Table33>& table,
+                       const std::vector<std::string>& extra = {}) {
   const double dps[3] = {0.0035, 0.005, 0.007};
   const char* const dps_mm[3] = {"3.5", "5", "7"};
   double avg_max[3], avg_min[3];
   for (int k = 0; k < 3; ++k) {
-    const std::vector<std::string> overrides = {"particles.dp=" + std::to_string(dps[k]),
-                                                "time.end=" + std::to_string(kConvergenceDuration),
-                                                "output.snapshot_interval=0", "output.sample_interval=0.01"};
+    std::vector<std::string> overrides = {"particles.dp=" + std::to_string(dps[k]),
+                                          "time.end=" + std::to_string(kConvergenceDuration),
+                                          "output.snapshot_interval=0", "output.sample_interval=0.01"};
+    overrides.insert(overrides.end(), extra.begin(), extra.end());
     double omega = 0.0;
     const auto r = run_case_in_memory(file, overrides, [&](const Simulation& s) { omega = s.spec().excitation.omega; });
     const std::string at = std::string(", dp = ") + dps_mm[k] + " mm";
@@ -126,12 +130,13 @@ void check_convergence(const std::string& label, const std::string& file, const 
     const std::string key = label + "_dp" + std::to_string(int(std::lround(dps[k] * 1e4))) + "e-4";
     report(key + "_avg_max_m", a.avg_max);
     report(key + "_avg_min_m", a.avg_min);
-    report(key + "_avg_max_vs_table_3_3", a.avg_max / table.max[k] - 1.0);
-    report(key + "_avg_min_vs_table_3_3", a.avg_min / table.min[k] - 1.0);
     report(key + "_wall_seconds", r.wall_seconds);
-    check_relative("average maximum of the left gauge (5 Hz low-pass), last 5 s" + at, a.avg_max, table.max[k], 0.10,
+    if (!table) continue;
+    report(key + "_avg_max_vs_table_3_3", a.avg_max / table->max[k] - 1.0);
+    report(key + "_avg_min_vs_table_3_3", a.avg_min / table->min[k] - 1.0);
+    check_relative("average maximum of the left gauge (5 Hz low-pass), last 5 s" + at, a.avg_max, table->max[k], 0.10,
                    "thesis Table 3.3, Avg. Max., " + file, "m");
-    check_relative("average minimum of the left gauge (5 Hz low-pass), last 5 s" + at, a.avg_min, table.min[k], 0.10,
+    check_relative("average minimum of the left gauge (5 Hz low-pass), last 5 s" + at, a.avg_min, table->min[k], 0.10,
                    "thesis Table 3.3, Avg. Min., " + file, "m");
   }
   const double r_max = (avg_max[1] - avg_max[0]) / (avg_max[2] - avg_max[1]);
@@ -145,15 +150,33 @@ void check_convergence(const std::string& label, const std::string& file, const 
 }
 
 TEST(Long, ConvergenceSlopedTank) {
-  check_convergence("convergence_sloped", "shapes_sloped.toml", {{0.0182, 0.0186, 0.0191}, {-0.0396, -0.0399, -0.0405}});
+  check_convergence("convergence_sloped", "shapes_sloped.toml",
+                    Table33{{0.0182, 0.0186, 0.0191}, {-0.0396, -0.0399, -0.0405}});
 }
 
 TEST(Long, ConvergenceParabolicTank) {
-  check_convergence("convergence_parabolic", "shapes_parabolic.toml", {{0.0396, 0.0398, 0.0400}, {-0.0396, -0.0399, -0.0405}});
+  check_convergence("convergence_parabolic", "shapes_parabolic.toml",
+                    Table33{{0.0396, 0.0398, 0.0400}, {-0.0396, -0.0399, -0.0405}});
 }
 
 TEST(Long, ConvergenceCircularTank) {
-  check_convergence("convergence_circular", "shapes_circular.toml", {{0.0213, 0.0222, 0.0235}, {-0.033, -0.035, -0.0368}});
+  check_convergence("convergence_circular", "shapes_circular.toml",
+                    Table33{{0.0213, 0.0222, 0.0235}, {-0.033, -0.035, -0.0368}});
+}
+
+// The same studies with the screens' spacing held at 5 mm. The Ergun grain diameter D_c is the
+// screen spacing (default dp), and the permeability goes as D_c^2, so in the studies above each
+// refinement also makes the screens resist more (docs/validation/notes.md: at dp = 7 mm a 5 mm
+// and a 3.5 mm screen spacing reproduce the 5 and 3.5 mm runs' heights). With D_c fixed, only
+// the particle resolution changes. Tolerance: 0 < R < 1 (ITTC); no table (not the thesis's set-up).
+TEST(Long, ConvergenceParabolicTankFixedScreenSpacing) {
+  check_convergence("convergence_parabolic_screen_spacing_5mm", "shapes_parabolic.toml", std::nullopt,
+                    {"screens.0.spacing=0.005", "screens.1.spacing=0.005"});
+}
+
+TEST(Long, ConvergenceCircularTankFixedScreenSpacing) {
+  check_convergence("convergence_circular_screen_spacing_5mm", "shapes_circular.toml", std::nullopt,
+                    {"screens.0.spacing=0.005"});
 }
 
 }  // namespace
