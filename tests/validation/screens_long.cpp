@@ -88,7 +88,8 @@ Crest biswal(const std::string& file, const std::string& label, const std::vecto
 // line across the tank (the thesis's "ER" model, dp = 10 mm, porosity = the open fraction
 // 1 - L_b/L = 0.4) must give the same average crest at the wall within 15% (issue 3). Recorded,
 // not asserted: the Ergun line with the porosity the thesis prints, n_w = L_b/L = 0.6.
-// Wall time, one thread: about 25 minutes for each Ergun run and 105 for the explicit one.
+// Wall time, one thread beside one other job (2026-12-03): 527 s for each Ergun run, 2,768 s for
+// the explicit one.
 TEST(ValidationLong, BiswalBafflesErgunAgainstExplicit) {
   const Crest explicit_baffles = biswal("biswal_baffles_explicit.toml", "explicit_dp5mm", {});
   const Crest ergun = biswal("biswal_baffles.toml", "ergun_dp10mm", {});

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "sloshsph/analysis/admittance.hpp"
 #include "sloshsph/analysis/stats.hpp"
@@ -72,6 +73,14 @@ std::vector<double> resample(const std::vector<double>& t, const std::vector<dou
 
 nlohmann::json rms_and_peak(const std::vector<double>& x, const char* unit) {
   return {{std::string("rms_") + unit, rms(x)}, {std::string("peak_") + unit, peak_abs(x)}};
+}
+
+// "displacement" and "acceleration" (RMS and peak; the acceleration also in milli-g) of a motion.
+void add_motion(nlohmann::json& j, const std::vector<double>& x, const std::vector<double>& acc) {
+  j["displacement"] = rms_and_peak(x, "m");
+  j["acceleration"] = rms_and_peak(acc, "m_s2");
+  j["acceleration"]["rms_milli_g"] = rms(acc) / kMilliG;
+  j["acceleration"]["peak_milli_g"] = peak_abs(acc) / kMilliG;
 }
 
 }  // namespace
@@ -185,15 +194,11 @@ nlohmann::json without_tank_summary(const StructureSeries& s, const StructureSpe
   const std::vector<double> acc = after(s.time, alone.a_s, o.skip_seconds);
   nlohmann::json w;
   w["method"] = "the structure alone under this run's recorded load, Newmark average acceleration";
-  w["displacement"] = rms_and_peak(x, "m");
-  w["acceleration"] = rms_and_peak(acc, "m_s2");
-  w["acceleration"]["rms_milli_g"] = rms(acc) / kMilliG;
-  w["acceleration"]["peak_milli_g"] = peak_abs(acc) / kMilliG;
+  add_motion(w, x, acc);
   if (const auto a = structure_admittance(alone, spec, o)) w["effective_damping_ratio"] = a->effective_damping;
   // Ratios only where the structure alone moves (a zero load leaves nothing to compare with).
   auto ratio = [](double run, double without) { return without > 0.0 ? nlohmann::json(run / without) : nlohmann::json(); };
-  for (const char* quantity : {"displacement", "acceleration"}) {
-    const char* unit = std::string(quantity) == "displacement" ? "m" : "m_s2";
+  for (const auto& [quantity, unit] : {std::pair{"displacement", "m"}, std::pair{"acceleration", "m_s2"}}) {
     const std::string rms_key = std::string("rms_") + unit, peak_key = std::string("peak_") + unit;
     j[quantity]["rms_ratio_to_without_tank"] =
         ratio(j[quantity][rms_key].get<double>(), w[quantity][rms_key].get<double>());
@@ -226,10 +231,7 @@ nlohmann::json structure_summary(const StructureSeries& s, const StructureSpec& 
     j["note"] = "no samples after skip_s";
     return j;
   }
-  j["displacement"] = rms_and_peak(x, "m");
-  j["acceleration"] = rms_and_peak(acc, "m_s2");
-  j["acceleration"]["rms_milli_g"] = rms(acc) / kMilliG;
-  j["acceleration"]["peak_milli_g"] = peak_abs(acc) / kMilliG;
+  add_motion(j, x, acc);
   j["load"] = {{"type", load_name(spec.load.type)}, {"rms_N", rms(f)}, {"peak_N", peak_abs(f)}};
   j["structure_without_tank"] = without_tank_summary(s, spec, o, j);
 
