@@ -27,6 +27,11 @@ Vec2 ergun_pressure_gradient(double mu, double rho, double permeability, double 
   return (viscous + inertial * norm(velocity)) * velocity;
 }
 
+double ergun_inertial_loss_coefficient(double permeability, double porosity, double thickness) {
+  // Twice the inertial coefficient of eq. 2.21 (per rho |u| u) times the thickness L = t_sc (eq. 2.24).
+  return 2.0 * thickness * 1.75 / (std::sqrt(150.0) * std::sqrt(permeability) * std::pow(porosity, 1.5));
+}
+
 double slat_screen_loss_coefficient(double solidity) {
   // Baines & Peterson (1951) as used by Tait et al. (2005) for slat screens.
   const double s = solidity;

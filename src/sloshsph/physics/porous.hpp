@@ -41,6 +41,14 @@ double kozeny_carman_permeability(double porosity, double diameter);
 // Directed along u (the fluid loses pressure in the direction it flows).
 Vec2 ergun_pressure_gradient(double mu, double rho, double permeability, double porosity, Vec2 velocity);
 
+// The loss coefficient of an Ergun element of thickness t at high Reynolds number: the inertial
+// term of eq. 2.24 written as 1/2 rho C_E |u| u,
+//   C_E = 2 t 1.75 / (sqrt(150) sqrt(K_P) n^1.5)   (= 3.5 t (1 - n) / (n^3 D_c) with eq. 2.22).
+// The viscous term adds 2 t mu / (K_P rho |u|), small at sloshing speeds. C_E is what a
+// macroscopic Ergun screen resists like, to compare with a real screen's loss coefficient C_l
+// (slat_screen_loss_coefficient): it scales with t / D_c, not with the slat geometry.
+double ergun_inertial_loss_coefficient(double permeability, double porosity, double thickness);
+
 // Loss coefficient of a sharp-edged slat screen of solidity S (Baines & Peterson 1951, in the form
 // used for TLD slat screens by Tait et al. 2005, J. Fluids Struct. 20:1007):
 //   C_l = (1 / (C_c (1 - S)) - 1)^2,   C_c = 0.405 exp(-pi S) + 0.595,

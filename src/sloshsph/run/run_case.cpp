@@ -24,6 +24,7 @@
 #include "sloshsph/io/vtk_writer.hpp"
 #include "sloshsph/run/progress.hpp"
 #include "sloshsph/run/response.hpp"
+#include "sloshsph/run/screen_summary.hpp"
 #include "sloshsph/run/structure_summary.hpp"
 #include "sloshsph/run/simulation.hpp"
 
@@ -377,6 +378,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["git_revision"] = kGitRevision;
   if (nlohmann::json response = analyse_response(spec, sim, series, dir); !response.is_null())
     s["response"] = response;
+  if (!sim.screens().elements.empty()) s["screens"] = screens_summary(sim.screens());
   if (spec.structure && !series.columns.empty()) {
     // RMS and peak response, and for noise loads the admittance and effective damping.
     StructureSeries ss = structure_series(column_names(sim), series.columns);

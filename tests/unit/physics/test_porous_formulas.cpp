@@ -54,6 +54,21 @@ TEST(PorousFormulas, ErgunVectorForm) {
   EXPECT_DOUBLE_EQ(gm.y, -g.y);
 }
 
+// Ergun's inertial loss coefficient, C_E = 3.5 t (1 - n) / (n^3 D_c): for n = 0.58, D_c = 7 mm,
+// t = 1 mm by hand 3.5e-3 x 0.42 / (0.195112 x 0.007) = 1.0763049 (tolerance 1e-7 relative). It
+// is the same number as eq. 2.24's inertial pressure loss over t, 5381.52 Pa/m x 1e-3 m at
+// |u| = 0.1 m/s, divided by 1/2 rho u^2 = 5 Pa (tolerance 1e-5, the hand value's digits).
+TEST(PorousFormulas, ErgunInertialLossCoefficient) {
+  const double k = kozeny_carman_permeability(0.58, 0.007);
+  EXPECT_NEAR(ergun_inertial_loss_coefficient(k, 0.58, 0.001), 1.0763049, 1.0763049 * 1e-7);
+  const double drop = ergun_pressure_gradient(0.0, 1000.0, k, 0.58, Vec2{0.1, 0.0}).x * 0.001;
+  EXPECT_NEAR(ergun_inertial_loss_coefficient(k, 0.58, 0.001), drop / 5.0, 1e-5 * drop / 5.0);
+  // Linear in t, and as 1/D_c through K_P (eq. 2.22).
+  EXPECT_NEAR(ergun_inertial_loss_coefficient(k, 0.58, 0.002), 2.0 * 1.0763049, 2e-7);
+  EXPECT_NEAR(ergun_inertial_loss_coefficient(kozeny_carman_permeability(0.58, 0.0035), 0.58, 0.001),
+              2.0 * 1.0763049, 2e-7);
+}
+
 // Morison drag per unit area, 1/2 rho C_l |u| u: rho = 1000, C_l = 2, u = (0.06, -0.08) (|u| = 0.1):
 // 0.5 * 1000 * 2 * 0.1 * u = (6, -8) Pa. Round-off tolerance 1e-12.
 TEST(PorousFormulas, MorisonPressureDrop) {

@@ -1,0 +1,52 @@
+#include "sloshsph/run/screen_summary.hpp"
+
+namespace sloshsph {
+
+namespace {
+
+const char* model_name(ScreenModel m) {
+  switch (m) {
+    case ScreenModel::ergun: return "ergun";
+    case ScreenModel::morison: return "morison";
+    case ScreenModel::explicit_slats: return "explicit";
+  }
+  return "?";
+}
+
+// The keys shared by the two macroscopic closures: how the element is discretised.
+void add_screen_particles(nlohmann::json& j, const ScreenElement& e) {
+  j["screen_particles"] = e.count;
+  j["spacing_m"] = e.spacing;
+  j["interaction_radius_m"] = e.smoothing_length;
+  j["velocity"] = e.shepard_velocity ? "shepard" : "thesis";
+}
+
+}  // namespace
+
+nlohmann::json screens_summary(const ScreenParticles& screens) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ScreenElement& e : screens.elements) {
+    nlohmann::json j = {{"name", e.name},
+                        {"model", model_name(e.model)},
+                        {"solidity", e.solidity},
+                        {"porosity", e.porosity},
+                        {"from", {e.from.x, e.from.y}},
+                        {"to", {e.to.x, e.to.y}},
+                        {"length_m", e.length},
+                        {"thickness_m", e.thickness}};
+    if (e.solidity > 0.0) j["slat_screen_loss_coefficient"] = slat_screen_loss_coefficient(e.solidity);
+    if (e.model == ScreenModel::ergun) {
+      add_screen_particles(j, e);
+      j["grain_diameter_m"] = e.nominal_spacing;  // D_c = dp_sc (thesis 2.5.2)
+      j["permeability_m2"] = e.permeability;
+      j["equivalent_loss_coefficient"] = ergun_inertial_loss_coefficient(e.permeability, e.porosity, e.thickness);
+    } else if (e.model == ScreenModel::morison) {
+      add_screen_particles(j, e);
+      j["loss_coefficient"] = e.loss_coefficient;
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+
+}  // namespace sloshsph
