@@ -14,6 +14,8 @@ run without --long. Checked:
   commit and date it came from;
 - an invocation keeps what another one wrote into results.json while it ran (`Fake.Meanwhile`,
   when the marker file exists, writes a result for FakeLong.NotRun as a parallel invocation would);
+- a result written meanwhile for a test added to the build tree during the run (`Fake.Grows`)
+  is kept, since the tests that exist are listed again after the run;
 - a stored result is dropped when its test left a label the build tree has, and kept when the
   build tree has no test of its label (that test executable was not built);
 - `--no-run` rewrites the page from results.json alone.
@@ -50,6 +52,24 @@ def meanwhile(docs, marker):
     return f"if [ -f {marker} ]; then {PY} -c \"{script}\"; fi"
 
 
+def grows(build, docs, marker):
+    """A shell command that, if `marker` exists, adds the test FakeLong.Added to the build tree and
+    stores a result for it, as a rebuild and a parallel invocation of the new test would."""
+    script = os.path.join(os.path.dirname(marker), "grow.py")
+    with open(script, "w") as f:
+        f.write(f"""import json
+with open({os.path.join(build, 'CTestTestfile.cmake')!r}, 'a') as f:
+    f.write('add_test([=[FakeLong.Added]=] "/bin/sh" "-c" "exit 0")\\n')
+    f.write('set_tests_properties([=[FakeLong.Added]=] PROPERTIES LABELS "long")\\n')
+p = {os.path.join(docs, 'validation', 'results.json')!r}
+d = json.load(open(p))
+d['tests']['FakeLong.Added'] = dict(label='long', status='failed', seconds=9.0, commit='def', date='added',
+                                    checks=[], figures=[])
+json.dump(d, open(p, 'w'))
+""")
+    return f"if [ -f {marker} ]; then {PY} {script}; fi"
+
+
 def make_build_tree(build, docs, marker):
     os.makedirs(build)
     passing = [
@@ -74,6 +94,7 @@ def make_build_tree(build, docs, marker):
         ("Fake.Fails", "validation", record("Fake.Fails", failing) + " && exit 1"),
         ("FakeLong.NotRun", "long", "exit 1"),
         ("Fake.Meanwhile", "validation", meanwhile(docs, marker)),
+        ("Fake.Grows", "validation", grows(build, docs, marker + "-grow")),
     ]
     with open(os.path.join(build, "CTestTestfile.cmake"), "w") as f:
         for name, label, command in tests:
@@ -100,7 +121,7 @@ def main():
         code, log = run(build, docs)
         check(code == 3, f"a failing test gives exit code 3 (got {code})")
         page = open(os.path.join(docs, "validation.md")).read()
-        check("3 of 4 tests have results: 2 passed, 1 failed" in page, "summary counts the tests")
+        check("4 of 5 tests have results: 3 passed, 1 failed" in page, "summary counts the tests")
         check("| pressure at the floor | 2452 Pa (hydrostatics) | ± 2 % | 2456 Pa (+0.14 %) | pass |" in page,
               "a relative check's row: reference, tolerance, measured with its deviation, verdict")
         check("| front RMS error | Koshizuka and Oka | ≤ 0.05 m | 0.2800 m | **FAIL** |" in page, "a failed check")
@@ -128,6 +149,13 @@ def main():
         check(code == 0 and stored["FakeLong.NotRun"].get("date") == "elsewhere"
               and stored["Fake.Meanwhile"]["status"] == "passed",
               "a result written by another invocation during the run is kept beside this run's")
+
+        open(marker + "-grow", "w").close()
+        code, log = run(build, docs, "--filter", "^Fake\\.Grows$")
+        stored = json.load(open(os.path.join(docs, "validation", "results.json")))["tests"]
+        check(stored.get("FakeLong.Added", {}).get("date") == "added",
+              "a result for a test added to the build tree during the run is kept (not dropped as removed)")
+        os.remove(marker + "-grow")
 
         results_path = os.path.join(docs, "validation", "results.json")
         d = json.load(open(results_path))
