@@ -35,6 +35,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 EXIT_OK, EXIT_INTERNAL, EXIT_USAGE, EXIT_FAILED = 0, 1, 2, 3
 RESULTS = os.path.join("validation", "results.json")
+ALL_LABELS = ["validation", "unit-theory", "long"]  # the labels whose tests the page lists
 NOTES = os.path.join("validation", "notes.md")
 FIGURES = os.path.join("figures", "validation")
 
@@ -52,9 +53,9 @@ def list_tests(build_dir, labels, strict=True):
     list them: an error (strict), or {} (not strict: the results of a run must still be kept)."""
     out = subprocess.run(["ctest", "--test-dir", build_dir, "--show-only=json-v1"],
                          capture_output=True, text=True)
-    if out.returncode != 0 and not strict:
-        return {}
     if out.returncode != 0:
+        if not strict:
+            return {}
         fail_usage(f"{build_dir}: ctest cannot list the tests: {out.stderr.strip()}")
     tests = {}
     for t in json.loads(out.stdout).get("tests", []):
@@ -345,7 +346,7 @@ def main():
     ap.add_argument("--no-run", action="store_true")
     a = ap.parse_args()
 
-    labels = ["validation", "unit-theory", "long"] if a.long else ["validation", "unit-theory"]
+    labels = ALL_LABELS if a.long else ["validation", "unit-theory"]
     os.makedirs(os.path.join(a.docs, "validation"), exist_ok=True)
     figures_dir = os.path.join(a.docs, FIGURES)
     os.makedirs(figures_dir, exist_ok=True)
@@ -359,7 +360,7 @@ def main():
         run_info = (last_invocation + "; " if last_invocation else "") + f"page rewritten {now} without running tests"
     else:
         build_dir = os.path.abspath(a.build_dir)
-        known = list_tests(build_dir, ["validation", "long", "unit-theory"])
+        known = list_tests(build_dir, ALL_LABELS)
         if not known:
             fail_usage(f"{build_dir}: no tests labelled validation or long (was the project built with its tests?)")
         # A folder of this invocation's own: two invocations on one build tree must not clear
@@ -377,7 +378,7 @@ def main():
         # Which tests exist is also read again: the build tree may have gained tests during a
         # long run (another invocation's results for a test added meanwhile were dropped as
         # "no longer existing" when the list from the start was used). The tests that ran stay.
-        known = {**known, **list_tests(build_dir, ["validation", "long", "unit-theory"], strict=False)}
+        known = {**known, **list_tests(build_dir, ALL_LABELS, strict=False)}
         # Drop the tests that no longer exist. A label none of whose tests is in this build tree
         # (its test executable was not built: scripts/build.sh with targets) keeps its stored results.
         present = set(known.values())

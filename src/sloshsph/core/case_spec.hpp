@@ -125,6 +125,16 @@ struct SchemeSpec {
 // A porous element (screen, baffle, perforated floor) or an explicit slat screen (thesis 2.5, 4.2.2).
 enum class ScreenModel { ergun, morison, explicit_slats };
 
+// The case key's spelling of a model (`screens.N.model`): "ergun", "morison", "explicit".
+inline const char* screen_model_name(ScreenModel m) {
+  switch (m) {
+    case ScreenModel::ergun: return "ergun";
+    case ScreenModel::morison: return "morison";
+    case ScreenModel::explicit_slats: return "explicit";
+  }
+  return "?";
+}
+
 struct ScreenSpec {
   std::string name;
   Vec2 from, to;                 // m, the element's centre line

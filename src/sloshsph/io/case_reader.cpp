@@ -937,7 +937,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
       t.insert("from", toml::array{sc.from.x, sc.from.y});
       t.insert("to", toml::array{sc.to.x, sc.to.y});
     }
-    t.insert("model", sc.model == ScreenModel::morison ? "morison" : sc.model == ScreenModel::explicit_slats ? "explicit" : "ergun");
+    t.insert("model", screen_model_name(sc.model));
     // A solidity derived from the slats is left to be derived again: written out, it would be
     // range-checked as a given solidity (< 0.999) and a solid baffle's copy would be refused.
     const bool derived = sc.slat_height > 0.0 && sc.slat_gap > 0.0 &&

@@ -20,16 +20,26 @@ double kozeny_carman_permeability(double porosity, double diameter) {
   return n * n * n * diameter * diameter / (150.0 * (1.0 - n) * (1.0 - n));
 }
 
+namespace {
+
+// The inertial (Forchheimer) coefficient of thesis eq. 2.21 per rho |u| u, 1/m:
+// 1.75 / (sqrt(150) sqrt(K) n^1.5).
+double ergun_inertial_factor(double permeability, double porosity) {
+  return 1.75 / (std::sqrt(150.0) * std::sqrt(permeability) * std::pow(porosity, 1.5));
+}
+
+}  // namespace
+
 Vec2 ergun_pressure_gradient(double mu, double rho, double permeability, double porosity, Vec2 velocity) {
   // Thesis eq. 2.21: viscous (Darcy) term + inertial (Forchheimer) term.
   const double viscous = mu / permeability;
-  const double inertial = 1.75 / std::sqrt(150.0) * rho / (std::sqrt(permeability) * std::pow(porosity, 1.5));
+  const double inertial = rho * ergun_inertial_factor(permeability, porosity);
   return (viscous + inertial * norm(velocity)) * velocity;
 }
 
 double ergun_inertial_loss_coefficient(double permeability, double porosity, double thickness) {
-  // Twice the inertial coefficient of eq. 2.21 (per rho |u| u) times the thickness L = t_sc (eq. 2.24).
-  return 2.0 * thickness * 1.75 / (std::sqrt(150.0) * std::sqrt(permeability) * std::pow(porosity, 1.5));
+  // Eq. 2.21's inertial loss times the thickness L = t_sc (eq. 2.24), per 1/2 rho u^2.
+  return 2.0 * thickness * ergun_inertial_factor(permeability, porosity);
 }
 
 double slat_screen_loss_coefficient(double solidity) {

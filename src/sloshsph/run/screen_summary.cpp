@@ -4,15 +4,6 @@ namespace sloshsph {
 
 namespace {
 
-const char* model_name(ScreenModel m) {
-  switch (m) {
-    case ScreenModel::ergun: return "ergun";
-    case ScreenModel::morison: return "morison";
-    case ScreenModel::explicit_slats: return "explicit";
-  }
-  return "?";
-}
-
 // The keys shared by the two macroscopic closures: how the element is discretised.
 void add_screen_particles(nlohmann::json& j, const ScreenElement& e) {
   j["screen_particles"] = e.count;
@@ -27,7 +18,7 @@ nlohmann::json screens_summary(const ScreenParticles& screens) {
   nlohmann::json out = nlohmann::json::array();
   for (const ScreenElement& e : screens.elements) {
     nlohmann::json j = {{"name", e.name},
-                        {"model", model_name(e.model)},
+                        {"model", screen_model_name(e.model)},
                         {"solidity", e.solidity},
                         {"porosity", e.porosity},
                         {"from", {e.from.x, e.from.y}},
