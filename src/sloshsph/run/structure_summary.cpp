@@ -160,6 +160,9 @@ std::optional<StructureAdmittance> structure_admittance(const StructureSeries& s
   a.structure_damping_ratio = sdof_spec(spec).damping_ratio();
   a.force_level = noise_load_level(spec).psd_level;
   a.segment_seconds = length * g.dt;
+  // The Welch bins are 1 / segment apart: a band with fewer than two whole bins in it has no
+  // area to measure (a run of a few seconds), so it has no admittance either.
+  if (a.segment_seconds * (a.f_hi - a.f_lo) < 2.0) return std::nullopt;
   const std::vector<double> x = resample(s.time, s.x_s, g);
   a.force_psd = welch_psd(resample(s.time, s.F_e, g), g.dt, length);
   a.displacement_psd = welch_psd(x, g.dt, length);
@@ -173,6 +176,7 @@ std::optional<StructureAdmittance> structure_admittance(const StructureSeries& s
   // the force has no power outside the band, so neither has the linear response), so
   //   zeta_eff = pi f_n / (4 area) = pi f_n S0 / (4 K^2 sigma_x^2).
   const double variance = std::pow(standard_deviation(x), 2);
+  if (!(variance > 0.0)) return std::nullopt;  // a structure that does not move has no admittance
   a.effective_damping = std::numbers::pi * a.natural_frequency * a.force_level /
                         (4.0 * spec.stiffness * spec.stiffness * variance);
   a.effective_damping_welch = effective_damping_ratio(a.displacement, a.natural_frequency, a.f_lo, a.f_hi);

@@ -185,6 +185,21 @@ TEST(StructureAlone, NoiseEffectiveDampingIsTheStructuralDamping) {
             "f_Hz,H2_displacement,H2_structure_alone,S_force_N2_per_Hz,S_displacement_m2_per_Hz");
 }
 
+TEST(StructureAlone, ShortNoiseRecordHasNoAdmittanceAndNoError) {
+  // A run of a few seconds under noise (a quick look at a case): its Welch bins (1 / 0.5 s = 2 Hz
+  // apart) have none inside the 0.05-0.5 Hz band. The summary says so instead of failing the run
+  // (before this, the effective damping threw and the run ended without its summary.json).
+  const StructureSpec spec = thesis_building_alone_under_noise();
+  const StructureSeries s = building_alone(spec, 2.0, 0.01);
+  EXPECT_FALSE(structure_admittance(s, spec));
+  nlohmann::json j;
+  ASSERT_NO_THROW(j = structure_summary(s, spec));
+  EXPECT_EQ(j["admittance"]["note"].get<std::string>(), "record too short for a spectrum");
+  EXPECT_FALSE(j["structure_without_tank"].contains("effective_damping_ratio"));
+  // 40 s: quarter-length segments of 10 s, bins 0.1 Hz apart, 4.5 bins in the band: it has one.
+  EXPECT_TRUE(structure_admittance(building_alone(spec, 40.0, 0.01), spec));
+}
+
 TEST(StructureAlone, WithoutTankResponseReproducesTheStructureFromItsSampledLoad) {
   // summary.json "structure_without_tank" re-integrates the structure under the recorded F_e.
   // Reference: the same structure integrated at dt = 0.01 s with the exact load (building_alone)
