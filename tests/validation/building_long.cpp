@@ -15,12 +15,26 @@
 // of 10 and 44 milli-g) shows the values are in milli-g, which is how they are compared here.
 // The effective damping and the peak are those summary.json reports (run/structure_summary.hpp:
 // zeta_eff from the variance of the whole record, Vickery et al. 1983; the peak of |a_s|).
+//
+// Each run is a run directory that outlives the test, $SLOSHSPH_LONG_RUN_DIR/building_<tank>_<level>mg
+// (default <build>/long-runs), checkpointed every 60 s of simulated time. A test stopped on the way
+// (Ctrl-C, ctest's timeout, the machine going down) loses at most that; run it again and it resumes
+// each unfinished run and reuses each finished one. A run directory whose case.toml is not the case
+// file's resolved case now (the case changed) fails the test: delete it to start that run again.
+// So the eight runs (about 6.5 h each on one thread of the 2-core machine) can be spread over days,
+// or made with `sloshsph run CASE --checkpoint-every 60 --out DIR` and placed there.
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "run_support.hpp"
+#include "sloshsph/analysis/stats.hpp"
+#include "sloshsph/core/errors.hpp"
+#include "sloshsph/run/run_case.hpp"
 #include "sloshsph/run/structure_summary.hpp"
 #include "validation_check.hpp"
 
@@ -51,20 +65,60 @@ int order_disagreements(const std::vector<double>& ours, const std::vector<doubl
   return count;
 }
 
-Measured run_building(const std::string& tank, int level) {
-  const std::string name = "building_" + tank + "_" + std::to_string(level) + "mg.toml";
-  std::optional<StructureSpec> structure;  // the resolved case's, from the run itself
-  const auto r = testing::run_case_in_memory(name, {"output.snapshot_interval=0"},
-                                             [&](const Simulation& sim) { structure = sim.spec().structure; });
-  check_at_most("particles leaked from the tank in one hour, " + tank, static_cast<double>(r.leaked), 0.0,
-                "none may leave");
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> columns;
-  for (const auto& [column, values] : r.series) {
-    names.push_back(column);
-    columns.push_back(values);
+namespace fs = std::filesystem;
+
+fs::path long_run_dir(const std::string& stem) {
+  const char* env = std::getenv("SLOSHSPH_LONG_RUN_DIR");
+  const fs::path base = env && *env ? fs::path(env) : fs::path(SLOSHSPH_BINARY_DIR) / "long-runs";
+  return base / stem;
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Runs the case into `dir`, resumes it from its checkpoint, or finds it complete; returns whether
+// `dir` holds the completed run of exactly this case (the test has failed otherwise).
+bool complete_run(const CaseSpec& spec, const fs::path& dir) {
+  if (fs::exists(dir / "case.toml") && read_text(dir / "case.toml") != resolved_case_toml(spec)) {
+    ADD_FAILURE() << dir << " holds a run of another version of " << spec.source
+                  << " (its case.toml differs from the resolved case); delete the directory to run it again";
+    return false;
   }
-  const nlohmann::json s = structure_summary(structure_series(names, columns), *structure);
+  const nlohmann::json done = read_json(dir / "summary.json");
+  if (done.is_object() && done.value("status", "") == "completed") return true;
+  install_stop_handlers();
+  RunOptions o;
+  o.out_dir = dir.string();
+  o.progress = false;
+  o.checkpoint_every = 60.0;
+  o.command_line = "test_long --gtest_filter=" + testing::detail::current_test_name();
+  const int code = fs::exists(dir / "checkpoint.bin") ? resume_run(dir.string(), o) : (o.force = true, run_case(spec, o));
+  EXPECT_EQ(code, 0) << dir << ": the run " << (code == kExitInterrupted ? "was interrupted (run the test again to resume it)"
+                                                                          : "failed (its summary.json says why)");
+  return code == 0;
+}
+
+std::optional<Measured> run_building(const std::string& tank, int level) {
+  const std::string stem = "building_" + tank + "_" + std::to_string(level) + "mg";
+  const CaseSpec spec = resolve_case(read_case_file(testing::case_path(stem + ".toml"), {}));
+  const fs::path dir = long_run_dir(stem);
+  if (!complete_run(spec, dir)) return std::nullopt;
+  const nlohmann::json summary = read_json(dir / "summary.json");
+  const nlohmann::json meta = read_json(dir / "run.json");
+  check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(), 0.0,
+                "none may leave");
+  std::printf("  %s: git revision %s, %zu resumes, %.0f s of wall time\n", dir.c_str(),
+              meta.value("git_revision", "?").c_str(), meta.contains("resumed") ? meta["resumed"].size() : 0,
+              summary.value("wall_time_s", NAN));
+  const CsvTable table = read_csv_table((dir / "timeseries.csv").string());
+  const nlohmann::json s = structure_summary(structure_series(table.names, table.columns), *spec.structure);
   Measured m;
   m.zeta_percent = 100.0 * s.at("admittance").at("effective_damping_ratio").get<double>();
   m.peak_milli_g = s.at("acceleration").at("peak_milli_g").get<double>();
@@ -76,7 +130,7 @@ Measured run_building(const std::string& tank, int level) {
   report(key + "peak_acceleration_ratio_to_without_tank",
          s.at("acceleration").at("peak_ratio_to_without_tank").get<double>());
   report(key + "rms_acceleration_ratio_to_without_tank", s.at("acceleration").at("rms_ratio_to_without_tank").get<double>());
-  report(key + "wall_seconds", r.wall_seconds);
+  report(key + "wall_seconds", summary.value("wall_time_s", NAN));
   return m;
 }
 
@@ -84,7 +138,9 @@ void compare_with_tables(int level, const std::vector<ThesisRow>& table) {
   const std::string at = std::to_string(level) + " milli-g";
   std::vector<double> zeta, peak, zeta_thesis, peak_thesis;
   for (const ThesisRow& row : table) {
-    const Measured m = run_building(row.tank, level);
+    const std::optional<Measured> run = run_building(row.tank, level);
+    if (!run) return;  // failed above with the reason; an interrupted test stops here
+    const Measured& m = *run;
     check_relative("effective damping, " + row.tank + ", " + at, m.zeta_percent, row.zeta_percent, 0.25,
                    "thesis Table 4.3", "%");
     check_relative("peak structural acceleration, " + row.tank + ", " + at, m.peak_milli_g, row.peak_milli_g, 0.25,
