@@ -261,7 +261,7 @@ int resume_run(const std::string& dir, const RunOptions& options) {
   StateReader reader(read_text_file(checkpoint, "checkpoint"), checkpoint.string());
   if (reader.text("case") != case_text)
     throw InputError(case_path.string(), "", "case.toml changed since the checkpoint was written; refusing to resume");
-  Simulation sim(spec);
+  Simulation sim(spec, SimulationStart::for_checkpoint);
   sim.load_state(reader);
   RunFiles files;
   files.dir = dir;

@@ -55,7 +55,7 @@ CaseSpec resolve_case(CaseSpec spec) {
 
 // A function-try-block: the checks made while the scene and the excitation are built (fill
 // depth, screen geometry, noise band, ...) name their key; here they get the case file and line.
-Simulation::Simulation(const CaseSpec& spec) try
+Simulation::Simulation(const CaseSpec& spec, SimulationStart start) try
     : spec_(spec),
       scene_(build_scene(spec)),
       container_(*scene_.tank, container_grid(), (spec.particles.wall_layers + 2) * spec.particles.dp),
@@ -69,7 +69,7 @@ Simulation::Simulation(const CaseSpec& spec) try
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   start_plates();
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
-  settle();
+  if (start == SimulationStart::settled) settle();
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
   if (spec_.structure) {
     // The structure is released at t = 0 with the settled fluid at rest in the tank.

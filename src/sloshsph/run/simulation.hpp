@@ -41,10 +41,14 @@ struct LeakRecord {
   Vec2 position;
 };
 
+// How a Simulation begins: with the fluid settled for time.settle (a new run), or unsettled, to
+// be overwritten at once by load_state (a resume: settling would be thrown away).
+enum class SimulationStart { settled, for_checkpoint };
+
 class Simulation {
  public:
   // `spec` must have been through resolve_case. Throws InputError for a bad geometry.
-  explicit Simulation(const CaseSpec& spec);
+  explicit Simulation(const CaseSpec& spec, SimulationStart start = SimulationStart::settled);
 
   // Advances one time step. Throws RunFailure (non-finite values, speed beyond the bound,
   // more leaked particles than allowed), leaving the last completed state in place.
