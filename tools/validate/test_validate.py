@@ -18,7 +18,8 @@ run without --long. Checked:
   is kept, since the tests that exist are listed again after the run;
 - a stored result is dropped when its test left a label the build tree has, and kept when the
   build tree has no test of its label (that test executable was not built);
-- `--no-run` rewrites the page from results.json alone.
+- `--no-run` rewrites the page from results.json, with a "not run" row for a test of the build
+  tree that has no stored result yet.
 """
 import json
 import os
@@ -170,8 +171,13 @@ def main():
         check("Fake.Removed" not in stored, "a stored test missing from its label's tests in the build tree is dropped")
 
         os.remove(os.path.join(docs, "validation.md"))
+        with open(os.path.join(build, "CTestTestfile.cmake"), "a") as f:
+            f.write('add_test([=[FakeLong.New]=] "/bin/sh" "-c" "exit 0")\n')
+            f.write('set_tests_properties([=[FakeLong.New]=] PROPERTIES LABELS "long")\n')
         code, log = run(build, docs, "--no-run")
         check(code == 0 and os.path.exists(os.path.join(docs, "validation.md")), "--no-run rewrites the page")
+        check("| `FakeLong.New` | long | not run |" in open(os.path.join(docs, "validation.md")).read(),
+              "--no-run lists a test new to the build tree as not run")
 
         code, log = run(os.path.join(tmp, "nothing"), docs)
         check(code == 2 and ("cannot list the tests" in log or "no tests labelled" in log),

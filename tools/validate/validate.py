@@ -358,6 +358,10 @@ def main():
     failed = False
     if a.no_run:
         run_info = (last_invocation + "; " if last_invocation else "") + f"page rewritten {now} without running tests"
+        # Tests of the build tree with no stored result yet get their "not run" row (none is
+        # dropped here: without running, nothing says a stored test is gone for good).
+        for n, label in list_tests(os.path.abspath(a.build_dir), ALL_LABELS, strict=False).items():
+            results.setdefault(n, {"status": "not run", "label": label})
     else:
         build_dir = os.path.abspath(a.build_dir)
         known = list_tests(build_dir, ALL_LABELS)
