@@ -78,7 +78,6 @@ class IsphScheme {
   template <class K> void stage_with(const K& kernel, IsphStage stage, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
-  std::size_t ppe_row_length_bound(double support, const Particles& p, std::size_t i) const;
   template <class K>
   double assemble_ppe_row(const K& kernel, const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
   KrylovReport solve_ppe_system(bool multigrid);

@@ -20,6 +20,10 @@ struct WendlandC2 {
       : h(h_), inv_h(1.0 / h_), norm(7.0 / (4.0 * std::numbers::pi * h_ * h_)) {}
 
   double support() const { return 2.0 * h; }
+  // r^2 beyond which w and gradient_factor are exactly 0: the pair loops skip such pairs (the
+  // Verlet skin's) before the square root. Widened by 1e-9 so that rounding can never make it
+  // stricter than the kernels' own q >= 2.
+  double reach2() const { return 4.0 * h * h * (1.0 + 1e-9); }
 
   double w(double r) const {
     const double q = r * inv_h;
@@ -48,6 +52,10 @@ struct CubicSpline {
       : h(h_), inv_h(1.0 / h_), norm(10.0 / (7.0 * std::numbers::pi * h_ * h_)) {}
 
   double support() const { return 2.0 * h; }
+  // r^2 beyond which w and gradient_factor are exactly 0: the pair loops skip such pairs (the
+  // Verlet skin's) before the square root. Widened by 1e-9 so that rounding can never make it
+  // stricter than the kernels' own q >= 2.
+  double reach2() const { return 4.0 * h * h * (1.0 + 1e-9); }
 
   double w(double r) const {
     const double q = r * inv_h;
