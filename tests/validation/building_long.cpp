@@ -49,11 +49,13 @@ struct ThesisRow {
   std::string tank;          // case name part: fr, sf, pf, tld
   double zeta_percent;       // Table 4.3
   double peak_milli_g;       // Table 4.4
+  double rms_milli_g = NAN;  // Table 4.2 (the perforated floor only)
 };
 
 struct Measured {
   double zeta_percent = NAN;
   double peak_milli_g = NAN;
+  double rms_milli_g = NAN;
 };
 
 // Pairs (i, j) ranked one way by `ours` and the other way by `thesis` (a tie in either never counts).
@@ -122,6 +124,7 @@ std::optional<Measured> run_building(const std::string& tank, int level) {
   Measured m;
   m.zeta_percent = 100.0 * s.at("admittance").at("effective_damping_ratio").get<double>();
   m.peak_milli_g = s.at("acceleration").at("peak_milli_g").get<double>();
+  m.rms_milli_g = s.at("acceleration").at("rms_milli_g").get<double>();
   const std::string key = "building_" + tank + "_" + std::to_string(level) + "mg_";
   report(key + "zeta_eff_percent", m.zeta_percent);
   report(key + "peak_acceleration_milli_g", m.peak_milli_g);
@@ -145,6 +148,18 @@ void compare_with_tables(int level, const std::vector<ThesisRow>& table) {
                    "thesis Table 4.3", "%");
     check_relative("peak structural acceleration, " + row.tank + ", " + at, m.peak_milli_g, row.peak_milli_g, 0.25,
                    "thesis Table 4.4 (values in milli-g)", "milli-g");
+    if (!std::isnan(row.rms_milli_g)) {
+      // Not in the bar, so recorded only. Table 4.2 is also at odds with Table 4.3: an
+      // SDOF's RMS response goes as 1 / sqrt(zeta), and the structure alone (RMS 2.76 milli-g for
+      // a mean hourly peak of 10.16, Davenport's peak factor 3.68) with zeta_eff = 1.54% would have
+      // 2.22 milli-g, not 1.69.
+      testing::Check c{"RMS structural acceleration, " + row.tank + ", " + at, "milli-g", m.rms_milli_g,
+                       testing::Tolerance::relative, row.rms_milli_g, 0.25,
+                       "thesis Table 4.2 (read in milli-g; at 10 milli-g its ER column, at 44 its MM column: the ER "
+                       "value is lost in the extracted text)"};
+      c.asserted = false;
+      testing::check(c);
+    }
     zeta.push_back(m.zeta_percent);
     peak.push_back(m.peak_milli_g);
     zeta_thesis.push_back(row.zeta_percent);
@@ -157,11 +172,11 @@ void compare_with_tables(int level, const std::vector<ThesisRow>& table) {
 }
 
 TEST(ValidationLong, BuildingTanksAgainstTables43And44At10MilliG) {
-  compare_with_tables(10, {{"fr", 1.50, 7.35}, {"sf", 1.53, 5.26}, {"pf", 1.54, 5.98}, {"tld", 2.25, 5.01}});
+  compare_with_tables(10, {{"fr", 1.50, 7.35}, {"sf", 1.53, 5.26}, {"pf", 1.54, 5.98, 1.69}, {"tld", 2.25, 5.01}});
 }
 
 TEST(ValidationLong, BuildingTanksAgainstTables43And44At44MilliG) {
-  compare_with_tables(44, {{"fr", 0.94, 31.60}, {"sf", 2.28, 24.87}, {"pf", 1.97, 26.10}, {"tld", 1.81, 24.67}});
+  compare_with_tables(44, {{"fr", 0.94, 31.60}, {"sf", 2.28, 24.87}, {"pf", 1.97, 26.10, 7.43}, {"tld", 1.81, 24.67}});
 }
 
 }  // namespace
