@@ -28,6 +28,7 @@ if [ $code = 0 ]; then echo "note: the run finished before the interrupt arrived
   grep -q '"status": "interrupted"' "$dir/cut/summary.json" || fail "summary should say interrupted"
   [ -s "$dir/cut/checkpoint.bin" ] || fail "no checkpoint after SIGINT"
   "$exe" resume "$dir/cut" --threads 1 --quiet 2> "$dir/resume.err" || fail "resume exit $?: $(cat "$dir/resume.err")"
+  grep -q "completed cut in" "$dir/resume.err" || fail "the resumed run is named after its directory: $(cat "$dir/resume.err")"
 fi
 cmp "$dir/full/timeseries.csv" "$dir/cut/timeseries.csv" || fail "time series differ after resume"
 cmp "$dir/full/particles.pvd" "$dir/cut/particles.pvd" || fail "snapshot index differs after resume"

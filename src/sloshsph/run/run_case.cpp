@@ -258,6 +258,10 @@ int resume_run(const std::string& dir, const RunOptions& options) {
                               "--checkpoint-every, and when interrupted)");
   const std::string case_text = read_text_file(case_path, "case.toml of the run");
   CaseSpec spec = resolve_case(read_case_file(case_path.string(), {}));
+  // Named after its file, the case would be called "case" in the messages: the run's directory
+  // names it better.
+  const fs::path run_path = fs::absolute(dir).lexically_normal();
+  spec.name = (run_path.has_filename() ? run_path : run_path.parent_path()).filename().string();
   StateReader reader(read_text_file(checkpoint, "checkpoint"), checkpoint.string());
   if (reader.text("case") != case_text)
     throw InputError(case_path.string(), "", "case.toml changed since the checkpoint was written; refusing to resume");
