@@ -101,7 +101,13 @@ bool complete_run(const CaseSpec& spec, const fs::path& dir) {
   o.progress = false;
   o.checkpoint_every = 60.0;
   o.command_line = "test_long --gtest_filter=" + testing::detail::current_test_name();
-  const int code = fs::exists(dir / "checkpoint.bin") ? resume_run(dir.string(), o) : (o.force = true, run_case(spec, o));
+  int code = 0;
+  if (fs::exists(dir / "checkpoint.bin")) {
+    code = resume_run(dir.string(), o);
+  } else {
+    o.force = true;  // a start that never reached its first checkpoint is begun again
+    code = run_case(spec, o);
+  }
   EXPECT_EQ(code, 0) << dir << ": the run " << (code == kExitInterrupted ? "was interrupted (run the test again to resume it)"
                                                                           : "failed (its summary.json says why)");
   return code == 0;
