@@ -147,7 +147,7 @@ namespace {
 template <class K>
 void sps_stress(const K& k, const Particles& p, const NeighbourList& nl, double cs, double ct, double dp,
                 std::vector<SymTensor2>& tau) {
-  const double V = p.volume, reach2 = k.reach2();
+  const double V = p.volume, reach2 = kernel_reach2(k);
   const double l2 = (cs * dp) * (cs * dp);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
@@ -181,7 +181,7 @@ template <class K>
 void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, const StepInput& in, double nu,
                       double eta2, bool turbulence, const std::vector<double>& repulsion, double repulsion_range,
                       IsphData& d) {
-  const double V = p.volume, reach2 = k.reach2();
+  const double V = p.volume, reach2 = kernel_reach2(k);
   const bool repulsive = !repulsion.empty();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
@@ -245,7 +245,7 @@ void predict_position(const Particles& p, double dt, IsphData& d) {
 template <class K>
 void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, const StepInput& in,
                             double alpha, double rho_ref, double threshold, IsphData& d) {
-  const double V = p.volume, m = p.mass, w0 = k.w(0.0), dt = in.dt, reach2 = k.reach2();
+  const double V = p.volume, m = p.mass, w0 = k.w(0.0), dt = in.dt, reach2 = kernel_reach2(k);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = d.position_star[i], ui = d.velocity_star[i];
@@ -280,7 +280,7 @@ void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, c
 // the base shear.
 template <class K>
 void correct_and_advance(const K& k, Particles& p, const NeighbourList& nl, double dt, double rho0, IsphData& d) {
-  const double c = p.volume / rho0, reach2 = k.reach2();
+  const double c = p.volume / rho0, reach2 = kernel_reach2(k);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = d.position_star[i];
@@ -380,7 +380,7 @@ double IsphScheme::assemble_ppe_row(const K& k, const Particles& p, const StepIn
   SparseRows& A = d.ppe_matrix;
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   const Vec2 ri = d.position_star[i];
-  const double reach2 = k.reach2();
+  const double reach2 = kernel_reach2(k);
   std::size_t slot = A.slot_begin[row] + 1;
   double diag = 0.0;
   double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;

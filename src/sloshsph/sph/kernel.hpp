@@ -20,10 +20,6 @@ struct WendlandC2 {
       : h(h_), inv_h(1.0 / h_), norm(7.0 / (4.0 * std::numbers::pi * h_ * h_)) {}
 
   double support() const { return 2.0 * h; }
-  // r^2 beyond which w and gradient_factor are exactly 0: the pair loops skip such pairs (the
-  // Verlet skin's) before the square root. Widened by 1e-9 so that rounding can never make it
-  // stricter than the kernels' own q >= 2.
-  double reach2() const { return 4.0 * h * h * (1.0 + 1e-9); }
 
   double w(double r) const {
     const double q = r * inv_h;
@@ -52,10 +48,6 @@ struct CubicSpline {
       : h(h_), inv_h(1.0 / h_), norm(10.0 / (7.0 * std::numbers::pi * h_ * h_)) {}
 
   double support() const { return 2.0 * h; }
-  // r^2 beyond which w and gradient_factor are exactly 0: the pair loops skip such pairs (the
-  // Verlet skin's) before the square root. Widened by 1e-9 so that rounding can never make it
-  // stricter than the kernels' own q >= 2.
-  double reach2() const { return 4.0 * h * h * (1.0 + 1e-9); }
 
   double w(double r) const {
     const double q = r * inv_h;
@@ -75,6 +67,15 @@ struct CubicSpline {
     return norm * (-0.75 * a * a) * inv_h / r;
   }
 };
+
+// r^2 beyond which a kernel's w and gradient_factor are exactly 0: the pair loops skip such pairs
+// (the Verlet skin's) before the square root. Widened by 1e-9 so that rounding can never make it
+// stricter than the kernels' own q >= 2.
+template <class K>
+double kernel_reach2(const K& k) {
+  const double s = k.support();
+  return s * s * (1.0 + 1e-9);
+}
 
 // Calls f(kernel) with the concrete kernel type selected at run time, so that
 // hot loops are compiled once per kernel with no per-pair dispatch.
