@@ -22,6 +22,23 @@ for _ in $(seq 1 12000); do
   kill -0 $pid 2> /dev/null || break
   sleep 0.05
 done
+# While the run goes on, a second process in its directory is refused at once (exit 2, before any
+# set-up) and changes nothing: a resume, and a run with --force, which would empty the directory.
+# The run is stopped (SIGSTOP) meanwhile: it keeps its lock and cannot end between the attempts.
+kill -STOP $pid 2> /dev/null
+case $(ps -o stat= -p $pid 2> /dev/null) in
+  T*)
+    "$exe" resume "$dir/cut" --threads 1 --quiet 2> "$dir/busy_resume.err"; busy_resume=$?
+    "$exe" run "$case" "${common[@]}" --force --out "$dir/cut" 2> "$dir/busy_run.err"; busy_run=$?
+    kill -CONT $pid
+    for attempt in resume run; do
+      err="$dir/busy_$attempt.err"; code_var=busy_$attempt
+      [ "${!code_var}" = 2 ] || fail "$attempt in the directory of a running run should exit 2, got ${!code_var}: $(cat "$err")"
+      grep -q "is running in this run directory" "$err" || fail "$attempt beside a running run, message: $(cat "$err")"
+    done
+    [ -s "$dir/cut/timeseries.csv" ] || fail "the refused run --force emptied the running run's directory";;
+  *) kill -CONT $pid 2> /dev/null; echo "note: the run ended before the second process was tried; the lock was not checked";;
+esac
 kill -INT $pid; wait $pid; code=$?
 if [ $code = 0 ]; then echo "note: the run finished before the interrupt arrived"; else
   [ $code = 4 ] || fail "interrupted run should exit 4, got $code"

@@ -1,6 +1,11 @@
 #include "sloshsph/io/files.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +34,39 @@ std::string read_file(const std::string& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+RunDirectoryLock::RunDirectoryLock(const std::string& dir) {
+  const std::string path = (std::filesystem::path(dir) / "run.lock").string();
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw InputError(dir, "", "cannot open run.lock in the run directory: " + std::string(std::strerror(errno)));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int error = errno;
+    char owner[32] = {0};
+    const ssize_t n = ::pread(fd_, owner, sizeof owner - 1, 0);
+    ::close(fd_);
+    fd_ = -1;
+    if (error != EWOULDBLOCK) {
+      // A file system without locks (some network mounts): run unguarded rather than not at all.
+      std::fprintf(stderr, "sloshsph: warning: %s: cannot lock run.lock (%s); nothing keeps a second process out of this run directory\n",
+                   dir.c_str(), std::strerror(error));
+      return;
+    }
+    std::string pid = n > 0 ? std::string(owner, static_cast<std::size_t>(n)) : std::string("unknown");
+    while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+    throw InputError(dir, "",
+                     "another process (pid " + pid + ") is running in this run directory and holds run.lock; wait for "
+                     "it to end, or stop it first (kill -INT " + pid + " writes a checkpoint)");
+  }
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  // The id is only a hint for the message above: the lock holds without it.
+  if (::ftruncate(fd_, 0) == 0) {
+    [[maybe_unused]] const ssize_t written = ::pwrite(fd_, pid.data(), pid.size(), 0);
+  }
+}
+
+RunDirectoryLock::~RunDirectoryLock() {
+  if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the lock
 }
 
 }  // namespace sloshsph

@@ -11,4 +11,22 @@ void write_file_atomic(const std::string& path, const std::string& content);
 // Reads a whole file; throws InputError(path) when it cannot.
 std::string read_file(const std::string& path);
 
+// An exclusive lock on a run directory, held while the object lives: flock() on DIR/run.lock,
+// which also holds the owner's process id. Why: two processes in one run directory (a run and a
+// resume, two resumes, two long tests) would interleave their rows in timeseries.csv and
+// overwrite each other's checkpoints. The kernel drops the lock when the process ends, however
+// it ends, so no stale lock is ever left behind. Throws InputError naming the directory and the
+// other process when it is taken; the directory must exist. On a file system without locks it
+// warns and guards nothing.
+class RunDirectoryLock {
+ public:
+  explicit RunDirectoryLock(const std::string& dir);
+  ~RunDirectoryLock();
+  RunDirectoryLock(const RunDirectoryLock&) = delete;
+  RunDirectoryLock& operator=(const RunDirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 }  // namespace sloshsph

@@ -57,19 +57,45 @@ std::string host_name() {
   return buf;
 }
 
-// Refuses to write into a non-empty directory unless forced; creates it.
-void prepare_directory(const std::string& dir, bool force) {
+struct Snapshots;
+
+// What a run writes into its directory, and the lock it holds on it.
+struct RunFiles {
+  std::unique_ptr<RunDirectoryLock> lock;  // first, so that it is released last
+  std::string dir;
+  nlohmann::json meta;
+  std::unique_ptr<CsvWriter> csv;
+  std::unique_ptr<Snapshots> snaps;
+};
+
+// Refuses a directory that is not one, or is not empty unless forced: before the case is set up
+// (its settle can take minutes), so that a bad --out is reported at once. A directory with files
+// in it may be another run's, still going, so it is locked now: --force must not empty it under
+// that run. (An empty one is left as it is until the case has been accepted.)
+void check_directory(RunFiles& files, bool force) {
+  const std::string& dir = files.dir;
   std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw InputError("--out " + dir, "", "exists and is not a directory");
-    if (!fs::is_empty(dir, ec) && !force)
-      throw InputError("--out " + dir, "", "the run directory exists and is not empty; choose another --out or pass --force");
-    if (force) {
-      for (const char* name : {"timeseries.csv", "summary.json", "run.json", "case.toml", "particles.pvd",
-                               "response.csv", "admittance.csv", "checkpoint.bin", "report.html"})
-        fs::remove(fs::path(dir) / name, ec);
-      fs::remove_all(fs::path(dir) / "particles", ec);
-    }
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw InputError("--out " + dir, "", "exists and is not a directory");
+  if (fs::is_empty(dir, ec)) return;
+  if (!force)
+    throw InputError("--out " + dir, "", "the run directory exists and is not empty; choose another --out or pass --force");
+  files.lock = std::make_unique<RunDirectoryLock>(dir);
+}
+
+// Creates the checked directory, locks it if it is new, and empties it under --force (only now
+// that the case has been accepted, and never under a run that is still going: it is locked).
+void prepare_directory(RunFiles& files, bool force) {
+  const std::string& dir = files.dir;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + dir, "", "cannot create the run directory: " + ec.message());
+  if (!files.lock) files.lock = std::make_unique<RunDirectoryLock>(dir);
+  if (force) {
+    for (const char* name : {"timeseries.csv", "summary.json", "run.json", "case.toml", "particles.pvd",
+                             "response.csv", "admittance.csv", "checkpoint.bin", "report.html"})
+      fs::remove(fs::path(dir) / name, ec);
+    fs::remove_all(fs::path(dir) / "particles", ec);
   }
   fs::create_directories(fs::path(dir) / "particles", ec);
   if (ec) throw InputError("--out " + dir, "", "cannot create the run directory: " + ec.message());
@@ -155,13 +181,6 @@ struct RunProgress {
   SampledSeries series;
 };
 
-struct RunFiles {
-  std::string dir;
-  nlohmann::json meta;
-  std::unique_ptr<CsvWriter> csv;
-  std::unique_ptr<Snapshots> snaps;
-};
-
 std::string read_text_file(const fs::path& path, const std::string& what) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "", "cannot read the " + what);
@@ -225,9 +244,10 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
 int run_case(const CaseSpec& spec, const RunOptions& options) {
   RunFiles files;
   files.dir = options.out_dir.empty() ? (fs::path("out") / spec.name).string() : options.out_dir;
+  check_directory(files, options.force);
   // Everything that can reject the case happens before the directory is touched.
   Simulation sim(spec);
-  prepare_directory(files.dir, options.force);
+  prepare_directory(files, options.force);
   for (const std::string& w : sim.scene().warnings) std::fprintf(stderr, "sloshsph: warning: %s\n", w.c_str());
   write_file_atomic((fs::path(files.dir) / "case.toml").string(), resolved_case_toml(spec));
   files.meta = run_metadata(spec, options);
@@ -253,6 +273,8 @@ int resume_run(const std::string& dir, const RunOptions& options) {
   const fs::path checkpoint = fs::path(dir) / "checkpoint.bin";
   std::error_code ec;
   if (!fs::is_regular_file(case_path, ec)) throw InputError(dir, "", "not a run directory (no case.toml)");
+  // Locked before anything is read: the run that holds it may be writing a checkpoint.
+  auto lock = std::make_unique<RunDirectoryLock>(dir);
   if (!fs::is_regular_file(checkpoint, ec))
     throw InputError(dir, "", "no checkpoint.bin to resume from (a completed run has none; a run writes one with "
                               "--checkpoint-every, and when interrupted)");
@@ -268,6 +290,7 @@ int resume_run(const std::string& dir, const RunOptions& options) {
   Simulation sim(spec, SimulationStart::for_checkpoint);
   sim.load_state(reader);
   RunFiles files;
+  files.lock = std::move(lock);
   files.dir = dir;
   files.snaps = std::make_unique<Snapshots>(
       Snapshots{dir, spec.output.snapshot_walls, PvdIndex((fs::path(dir) / "particles.pvd").string())});
