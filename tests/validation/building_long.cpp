@@ -12,8 +12,8 @@
 // (FR, SF, PF at 10 milli-g: 1.50, 1.53, 1.54%), so the order is the stricter check.
 //
 // Recorded beside them, not asserted: the perforated floor's RMS acceleration against Table 4.2,
-// and, once a level, the structure without a tank under the same recorded load (summary.json's
-// Newmark solution): its effective damping by the same estimator against its own 1%, and its peak
+// and, once a level, the structure without a tank under the same recorded load (the Newmark
+// solution that summary.json also reports): its effective damping by the same estimator against its own 1%, and its peak
 // against Table 4.4's STR row.
 //
 // Table 4.4's header gives m/s^2; its structure-alone row (10.16 and 44.75 under mean hourly peaks
@@ -61,8 +61,8 @@ struct Measured {
   double zeta_percent = NAN;
   double peak_milli_g = NAN;
   double rms_milli_g = NAN;
-  // The structure without a tank under the run's recorded load (Newmark, in summary.json): the
-  // same estimator on the same hour, and Table 4.4's STR row.
+  // The structure without a tank under the run's recorded load (Newmark, as in summary.json):
+  // the same estimator on the same hour, and Table 4.4's STR row.
   double zeta_without_tank_percent = NAN;
   double peak_without_tank_milli_g = NAN;
 };
