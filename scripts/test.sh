@@ -12,13 +12,14 @@
 #         interrupt and resume, reports; label `unit`) on the Release program: under the
 #         sanitizers they take about 1,080 s of test time instead of about 345 s, more than CI's
 #         budget allows (scripts/test-sanitizers.sh runs them too);
-#       - the physics validation (label `validation`) on the Release build.
+#       - the physics validation (label `validation`) and the time-series regression tests (label
+#         `regression`: short runs against tests/regression/reference/) on the Release build.
 #     About 30 minutes on 2 cores from scratch (docs/validation/notes.md, "Hostile input and sanitizers").
 #
 # Options (anything else goes to ctest, e.g. -R case_reader):
 #   --long           the `long` label on the Release build instead (hours; no sanitizers)
-#   --no-sanitizers  the labels `unit` and `validation` on the Release build alone (no build-asan/;
-#                    about 20 minutes from scratch)
+#   --no-sanitizers  the labels `unit`, `validation` and `regression` on the Release build alone
+#                    (no build-asan/; about 20 minutes from scratch)
 #
 # Tests run one per core (ctest -j, SLOSHSPH_TEST_JOBS to change) with one OpenMP thread each
 # (OMP_NUM_THREADS, unless set): one simulation gains only 1.15x from a second thread on this
@@ -46,12 +47,12 @@ if [ "$mode" = long ]; then
 fi
 if [ "$mode" = release ]; then
   "$root/scripts/build.sh"
-  exec ctest --test-dir "$build" -L "unit|validation" -j "$jobs" --output-on-failure "$@"
+  exec ctest --test-dir "$build" -L "unit|validation|regression" -j "$jobs" --output-on-failure "$@"
 fi
 
-# Release: only what the Release half runs (the program, the validation tests, and the theory
-# tests that `sloshsph validate` runs in cli.validate_theory).
-"$root/scripts/build.sh" sloshsph test_validation test_linear
+# Release: only what the Release half runs (the program, the validation and regression tests, and
+# the theory tests that `sloshsph validate` runs in cli.validate_theory).
+"$root/scripts/build.sh" sloshsph test_validation test_regression test_linear
 # Sanitizers: the gtest executables and the readers' mutation test (target unit_tests; the
 # program is not needed: its command-line tests run on the Release build).
 # shellcheck source=scripts/sanitizer-env.sh
@@ -64,10 +65,10 @@ cmake --build "$asan_build" -j "$jobs" --target unit_tests
 combined="$root/build-ci-tests"
 mkdir -p "$combined"
 {
-  echo "# Written by scripts/test.sh: the Release validation and command-line tests, the unit tests under the sanitizers."
+  echo "# Written by scripts/test.sh: the Release validation, regression and command-line tests, the unit tests under the sanitizers."
   echo "subdirs(\"$build/tests/validation\")"
   echo "subdirs(\"$build/tests/cli\")"
   for include in "$asan_build"/tests/*_include.cmake; do echo "include(\"$include\")"; done
   echo "subdirs(\"$asan_build/tests/fuzz\")"
 } > "$combined/CTestTestfile.cmake"
-ctest --test-dir "$combined" -L "unit|validation" -j "$jobs" --output-on-failure "$@"
+ctest --test-dir "$combined" -L "unit|validation|regression" -j "$jobs" --output-on-failure "$@"
