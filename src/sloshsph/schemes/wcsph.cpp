@@ -312,6 +312,12 @@ void rates(const K& k, const Particles& p, const NeighbourList& nl, const RateTe
   }
 }
 
+// The whole acceleration of fluid particle i at (r, u): the evaluated rates, the frame's body
+// force and the driver's extra (screen) acceleration, which is constant over the step.
+Vec2 total_acceleration(const WcsphData& d, const FrameForce& frame, std::size_t i, Vec2 r, Vec2 u) {
+  return d.acceleration[i] + frame.at(r, u) + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
+}
+
 }  // namespace
 
 // Wall pressure, density and velocity from the fluid around each wall particle.
@@ -440,8 +446,7 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
     d.position_start[i] = r;
     d.velocity_start[i] = u;
     d.density_start[i] = rho;
-    const Vec2 a = d.acceleration[i] + in.frame.at(r, u)
-        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
+    const Vec2 a = total_acceleration(d, in.frame, i, r, u);
     p.position[i] = r + 0.5 * dt * u;
     p.velocity[i] = u + 0.5 * dt * a;
     p.density[i] = rho + 0.5 * dt * d.density_rate[i];
@@ -449,8 +454,7 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
   evaluate(k, p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i])
-        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
+    const Vec2 a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
     const Vec2 u = d.velocity_start[i] + dt * a;
     p.velocity[i] = u;
     p.density[i] = d.density_start[i] + dt * d.density_rate[i];
@@ -474,8 +478,7 @@ void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
     const Vec2 r = p.position[i], u = p.velocity[i];
-    const Vec2 a = d.acceleration[i] + in.frame.at(r, u)
-        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
+    const Vec2 a = total_acceleration(d, in.frame, i, r, u);
     const Vec2 u_half = u + 0.5 * dt * a;
     const double rho_half = p.density[i] + 0.5 * dt * d.density_rate[i];
     d.velocity_start[i] = u_half;
@@ -488,8 +491,7 @@ void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
   evaluate(k, p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 a = d.acceleration[i] + in.frame.at(p.position[i], p.velocity[i])
-        + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
+    const Vec2 a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
     p.velocity[i] = d.velocity_start[i] + 0.5 * dt * a;
     p.density[i] = d.density_start[i] + 0.5 * dt * d.density_rate[i];
   }

@@ -383,6 +383,16 @@ double scaled_increment(const Eigen::VectorXd& delta_full, double length) {
 
 }  // namespace
 
+bool Beam::newton_correction(const Assembly& assembly, const Eigen::VectorXd& residual, Eigen::VectorXd& q,
+                             bool& small_increment) {
+  Eigen::VectorXd delta;
+  if (!solve_linear(assembly.triplets, -residual, delta)) return false;
+  const Eigen::VectorXd delta_full = expand(delta);
+  q += delta_full;
+  small_increment = scaled_increment(delta_full, total_length_) <= spec_.newton_increment_tolerance;
+  return true;
+}
+
 void Beam::prepare_initial_acceleration(const BeamLoads& loads) {
   // M a0 = f_ext - f_int - f_damp at the start of the motion (the loads of the first step are taken as
   // the loads at t0).
@@ -447,11 +457,7 @@ bool Beam::try_step_hht(double dt, const BeamLoads& loads, int& iterations) {
       return true;
     }
     if (it == spec_.newton_max_iterations) break;
-    Eigen::VectorXd delta;
-    if (!solve_linear(assembly.triplets, -residual, delta)) return false;
-    const Eigen::VectorXd delta_full = expand(delta);
-    q += delta_full;
-    small_increment = scaled_increment(delta_full, total_length_) <= spec_.newton_increment_tolerance;
+    if (!newton_correction(assembly, residual, q, small_increment)) return false;
   }
   return false;
 }
@@ -490,11 +496,7 @@ bool Beam::try_step_midpoint(double dt, const BeamLoads& loads, int& iterations)
       return true;
     }
     if (it == spec_.newton_max_iterations) break;
-    Eigen::VectorXd delta;
-    if (!solve_linear(assembly.triplets, -residual, delta)) return false;
-    const Eigen::VectorXd delta_full = expand(delta);
-    q += delta_full;
-    small_increment = scaled_increment(delta_full, total_length_) <= spec_.newton_increment_tolerance;
+    if (!newton_correction(assembly, residual, q, small_increment)) return false;
   }
   return false;
 }
@@ -554,11 +556,7 @@ BeamSolveReport Beam::static_solve(const BeamLoads& loads, int load_steps) {
         return true;
       }
       if (it == spec_.newton_max_iterations) break;
-      Eigen::VectorXd delta;
-      if (!solve_linear(assembly.triplets, -residual, delta)) return false;
-      const Eigen::VectorXd delta_full = expand(delta);
-      q += delta_full;
-      small_increment = scaled_increment(delta_full, total_length_) <= spec_.newton_increment_tolerance;
+      if (!newton_correction(assembly, residual, q, small_increment)) return false;
     }
     return false;
   };

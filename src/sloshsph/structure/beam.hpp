@@ -192,6 +192,10 @@ class Beam {
   bool solve_linear(const std::vector<Eigen::Triplet<double>>& triplets, const Eigen::VectorXd& rhs,
                     Eigen::VectorXd& solution);
   Eigen::VectorXd free_part(const Eigen::VectorXd& full) const;
+  // One Newton correction, q += K_T^-1 (-residual) on the free DOFs; `small_increment` says whether
+  // it fell below newton_increment_tolerance. False if the tangent could not be factorised.
+  bool newton_correction(const Assembly& assembly, const Eigen::VectorXd& residual, Eigen::VectorXd& q,
+                         bool& small_increment);
   void check_loads(const BeamLoads& loads) const;
   double section_angle(int element, double xi) const;
 
