@@ -10,9 +10,10 @@
 //
 // Tolerance: every sample of every column must lie within 1e-8 of that column's largest magnitude
 // in the reference. A column that is 0 throughout must stay 0, and nan must stay nan. The build
-// does not use -march=native (CMakeLists.txt), so the same compiler gives the same bits on any
-// x86-64 machine: the margin covers only another libm's last bits, grown over a few hundred
-// steps. It does not cover a change of the physics. A change that reorders a floating-point sum
+// does not use -march=native by default (CMakeLists.txt, SLOSHSPH_NATIVE), so the same compiler
+// gives the same bits on any x86-64 machine: the margin covers only another libm's last bits,
+// grown over a few hundred steps. (A native build contracts to fused multiply-adds and may differ
+// by more; it was not tried.) It does not cover a change of the physics. A change that reorders a floating-point sum
 // fails too, by design. Its author looks at the size of the difference that the failure prints,
 // writes new references with
 //   SLOSHSPH_UPDATE_REGRESSION=1 build/tests/validation/test_regression
