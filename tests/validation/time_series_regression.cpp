@@ -13,9 +13,9 @@
 // does not use -march=native by default (CMakeLists.txt, SLOSHSPH_NATIVE), so the same compiler
 // gives the same bits on any x86-64 machine: the margin covers only another libm's last bits,
 // grown over a few hundred steps. (A native build contracts to fused multiply-adds and may differ
-// by more; it was not tried.) It does not cover a change of the physics. A change that reorders a floating-point sum
-// fails too, by design. Its author looks at the size of the difference that the failure prints,
-// writes new references with
+// by more; it was not tried.) It does not cover a change of the physics. A change that reorders a
+// floating-point sum fails too, by design. Its author looks at the size of the difference that the
+// failure prints, writes new references with
 //   SLOSHSPH_UPDATE_REGRESSION=1 build/tests/validation/test_regression
 // (each test then reports SKIPPED and names the file it wrote), and says why in the commit.
 #include <gtest/gtest.h>
@@ -26,11 +26,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "run_support.hpp"
+#include "sloshsph/analysis/stats.hpp"
+#include "sloshsph/core/errors.hpp"
 
 namespace sloshsph::testing {
 namespace {
@@ -92,13 +93,9 @@ std::string reference_path(const std::string& name) {
   return source_path("tests/regression/reference/" + name + ".csv");
 }
 
-struct Table {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> columns;  // columns[k][row]
-};
-
-Table run_table(const RegressionCase& c) {
-  Table t;
+// The run's columns in the order the run writes them.
+CsvTable run_table(const RegressionCase& c) {
+  CsvTable t;
   const RunResult r = run_file_in_memory(source_path(c.case_file), c.overrides, [&](const Simulation& sim) {
     for (const auto& column : sim.columns()) t.names.push_back(column.name);
   });
@@ -106,7 +103,9 @@ Table run_table(const RegressionCase& c) {
   return t;
 }
 
-void write_table(const Table& t, const std::string& path, const RegressionCase& c) {
+// Written with 15 significant digits (timeseries.csv keeps 10) and a comment line naming the run;
+// read back by read_csv_table, which skips the comment.
+void write_table(const CsvTable& t, const std::string& path, const RegressionCase& c) {
   std::ofstream out(path);
   out << "# sloshsph regression reference: " << c.case_file;
   for (const std::string& o : c.overrides) out << " --set " << o;
@@ -114,7 +113,7 @@ void write_table(const Table& t, const std::string& path, const RegressionCase& 
   for (std::size_t k = 0; k < t.names.size(); ++k) out << (k ? "," : "") << t.names[k];
   out << "\n";
   char buffer[32];
-  for (std::size_t row = 0; row < t.columns.front().size(); ++row) {
+  for (std::size_t row = 0; row < t.rows(); ++row) {
     for (std::size_t k = 0; k < t.columns.size(); ++k) {
       std::snprintf(buffer, sizeof buffer, "%.15g", t.columns[k][row]);
       out << (k ? "," : "") << buffer;
@@ -122,28 +121,6 @@ void write_table(const Table& t, const std::string& path, const RegressionCase& 
     out << "\n";
   }
   if (!out) ADD_FAILURE() << "could not write " << path;
-}
-
-// Reads a reference written by write_table; an empty table if the file is missing or malformed.
-Table read_table(const std::string& path) {
-  Table t;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
-  }
-  if (line.empty()) return t;
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) t.names.push_back(name);
-  t.columns.resize(t.names.size());
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::size_t k = 0;
-    for (std::string field; std::getline(row, field, ',') && k < t.columns.size(); ++k) {
-      t.columns[k].push_back(std::strtod(field.c_str(), nullptr));
-    }
-    if (k != t.columns.size()) return {};
-  }
-  return t;
 }
 
 double largest_magnitude(const std::vector<double>& v) {
@@ -185,31 +162,31 @@ class TimeSeriesRegression : public ::testing::TestWithParam<RegressionCase> {};
 
 TEST_P(TimeSeriesRegression, MatchesStoredReference) {
   const RegressionCase& c = GetParam();
-  const Table now = run_table(c);
+  const CsvTable now = run_table(c);
   ASSERT_FALSE(now.names.empty());
   const std::string path = reference_path(c.name);
   const char* update = std::getenv("SLOSHSPH_UPDATE_REGRESSION");
   if (update && std::string(update) == "1") {
     write_table(now, path, c);
-    GTEST_SKIP() << "SLOSHSPH_UPDATE_REGRESSION=1: wrote " << path << " (" << now.columns.front().size()
+    GTEST_SKIP() << "SLOSHSPH_UPDATE_REGRESSION=1: wrote " << path << " (" << now.rows()
                  << " samples of " << now.names.size() << " columns); nothing compared";
   }
-  const Table ref = read_table(path);
-  ASSERT_FALSE(ref.names.empty()) << path << " is missing or malformed; write it with SLOSHSPH_UPDATE_REGRESSION=1";
-  ASSERT_EQ(now.columns.front().size(), ref.columns.front().size()) << "number of samples";
+  CsvTable ref;
+  try {
+    ref = read_csv_table(path);
+  } catch (const InputError& e) {
+    FAIL() << e.what() << " (write the reference with SLOSHSPH_UPDATE_REGRESSION=1)";
+  }
+  ASSERT_EQ(now.rows(), ref.rows()) << "number of samples";
   for (std::size_t k = 0; k < ref.names.size(); ++k) {
-    std::size_t found = 0;
-    while (found < now.names.size() && now.names[found] != ref.names[k]) ++found;
-    if (found == now.names.size()) {
+    if (!now.has(ref.names[k])) {
       ADD_FAILURE() << "column " << ref.names[k] << " of the reference is no longer written";
       continue;
     }
-    expect_same_column(ref.names[k], ref.columns.front(), ref.columns[k], now.columns[found]);
+    expect_same_column(ref.names[k], ref.columns.front(), ref.columns[k], now.column(ref.names[k]));
   }
   for (const std::string& name : now.names) {
-    if (std::find(ref.names.begin(), ref.names.end(), name) == ref.names.end()) {
-      std::printf("  column %s is new (not in the reference; not compared)\n", name.c_str());
-    }
+    if (!ref.has(name)) std::printf("  column %s is new (not in the reference; not compared)\n", name.c_str());
   }
 }
 
