@@ -35,6 +35,7 @@ Command add_sweep_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_resume_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
+Command add_status_command(CLI::App& app);
 
 // Runs the report script on a run or sweep directory (cmd_report.cpp); returns an exit code.
 int write_report(const std::string& dir, const std::vector<std::string>& extra = {});

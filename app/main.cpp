@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   std::vector<app::Command> commands = {app::add_run_command(app), app::add_modes_command(app),
                                         app::add_tune_command(app), app::add_sweep_command(app),
                                         app::add_report_command(app), app::add_resume_command(app),
-                                        app::add_validate_command(app)};
+                                        app::add_validate_command(app), app::add_status_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

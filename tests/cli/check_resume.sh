@@ -28,6 +28,9 @@ done
 kill -STOP $pid 2> /dev/null
 case $(ps -o stat= -p $pid 2> /dev/null) in
   T*)
+    # `status` names the process that holds the lock.
+    "$exe" status "$dir/cut" > "$dir/status_running.txt" || fail "status exit $?"
+    grep -q "running (pid $pid)" "$dir/status_running.txt" || fail "status of a running run: $(cat "$dir/status_running.txt")"
     "$exe" resume "$dir/cut" --threads 1 --quiet 2> "$dir/busy_resume.err"; busy_resume=$?
     "$exe" run "$case" "${common[@]}" --force --out "$dir/cut" 2> "$dir/busy_run.err"; busy_run=$?
     kill -CONT $pid
@@ -44,9 +47,12 @@ if [ $code = 0 ]; then echo "note: the run finished before the interrupt arrived
   [ $code = 4 ] || fail "interrupted run should exit 4, got $code"
   grep -q '"status": "interrupted"' "$dir/cut/summary.json" || fail "summary should say interrupted"
   [ -s "$dir/cut/checkpoint.bin" ] || fail "no checkpoint after SIGINT"
+  "$exe" status "$dir/cut" | grep -q "interrupted, resumable" || fail "status after SIGINT: $("$exe" status "$dir/cut")"
   "$exe" resume "$dir/cut" --threads 1 --quiet 2> "$dir/resume.err" || fail "resume exit $?: $(cat "$dir/resume.err")"
   grep -q "completed cut in" "$dir/resume.err" || fail "the resumed run is named after its directory: $(cat "$dir/resume.err")"
 fi
+"$exe" status "$dir" > "$dir/status_done.txt" || fail "status of the folder, exit $?"
+[ "$(grep -c " completed " "$dir/status_done.txt")" = 2 ] || fail "status of both runs: $(cat "$dir/status_done.txt")"
 cmp "$dir/full/timeseries.csv" "$dir/cut/timeseries.csv" || fail "time series differ after resume"
 cmp "$dir/full/particles.pvd" "$dir/cut/particles.pvd" || fail "snapshot index differs after resume"
 grep '"response"' -A200 "$dir/full/summary.json" | grep -v wall | head -60 > "$dir/r1"

@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -67,6 +69,27 @@ RunDirectoryLock::RunDirectoryLock(const std::string& dir) {
 
 RunDirectoryLock::~RunDirectoryLock() {
   if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the lock
+}
+
+long run_directory_lock_holder(const std::string& dir) {
+  struct stat lock_file {};
+  if (::stat((std::filesystem::path(dir) / "run.lock").c_str(), &lock_file) != 0) return 0;
+  std::ifstream locks("/proc/locks");
+  if (!locks) return -1;
+  // A line: "1: FLOCK  ADVISORY  WRITE 20559 fe:00:5333006 0 EOF" (the device's major and minor
+  // in hexadecimal, the inode in decimal); a process waiting for a lock has "->" before FLOCK.
+  char device[32];
+  std::snprintf(device, sizeof device, "%02x:%02x:", ::major(lock_file.st_dev), ::minor(lock_file.st_dev));
+  const std::string file_id = device + std::to_string(lock_file.st_ino);
+  std::string line;
+  while (std::getline(locks, line)) {
+    std::istringstream fields(line);
+    std::string number, type, mode, access, pid, id;
+    fields >> number >> type;
+    if (type != "FLOCK") continue;
+    if (fields >> mode >> access >> pid >> id && id == file_id) return std::stol(pid);
+  }
+  return 0;
 }
 
 }  // namespace sloshsph

@@ -29,4 +29,10 @@ class RunDirectoryLock {
   int fd_ = -1;
 };
 
+// The process that holds DIR/run.lock: its id when a process holds it, 0 when none does (or
+// there is no run.lock), -1 when this cannot be told (no /proc/locks: not Linux). It only reads
+// /proc/locks, which lists every flock() with its owner and the file's device and inode: it
+// never takes the lock itself, so asking cannot make a run that starts at that moment fail.
+long run_directory_lock_holder(const std::string& dir);
+
 }  // namespace sloshsph
