@@ -693,8 +693,67 @@ def structure_section(rep):
     parts.append(rl.table(["signal", "unit", "peak |value|", "RMS", "RMS, second half"], rows))
     psd_html = structure_psd(rep, [n for n in ("x_s", "a_s") if n in run.columns], info)
     parts.append(psd_html or "<p>The record is too short for a power spectral density (PSD).</p>")
+    parts.append(admittance_part(rep, info))
     rep.analysis["structure"] = info
     return "".join(parts)
+
+
+def admittance_part(rep, info):
+    """The mechanical admittance |H(f)|² of admittance.csv (thesis eq. 4.30) beside the structure
+    alone's and beside the SDOF of the effective damping ratio (the same area, Vickery et al.
+    1983), and the table of what the tank does to the structure (summary.json `structure`)."""
+    path = os.path.join(rep.run.dir, "admittance.csv")
+    block = rep.run.summary.get("structure", {}) if isinstance(rep.run.summary, dict) else {}
+    adm = block.get("admittance") if isinstance(block, dict) else None
+    if not os.path.exists(path) or not isinstance(adm, dict):
+        return ""
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    f, h2 = data["f_Hz"], data["H2_displacement"]
+    f_n, zeta = float(adm["natural_frequency_Hz"]), float(adm["effective_damping_ratio"])
+    lo, hi = adm.get("band_Hz", [f[1], f[-1]])
+    wave = "H2_wave" in data.dtype.names and np.any(data["H2_wave"] > 0)
+    fig, axes = plt.subplots(2 if wave else 1, 1, figsize=(10, 6.6 if wave else 3.8), squeeze=False,
+                             constrained_layout=True)
+    ax = axes[0, 0]
+    # The measured curves only where the load has power; up to 2.5 f_n, where the tank acts.
+    keep = (f >= lo) & (f <= min(hi, 2.5 * f_n))
+    ax.semilogy(f[keep], h2[keep], lw=1.0, label=f"with the tank(s): ζ_eff = {100 * zeta:.3g} %")
+    if "H2_structure_alone" in data.dtype.names:
+        ax.semilogy(f[keep], data["H2_structure_alone"][keep], lw=0.9, ls="--", color="0.3",
+                    label=f"structure alone, ζ = {100 * float(block.get('damping_ratio', 0.0)):.3g} %")
+    r = f[keep] / f_n
+    ax.semilogy(f[keep], 1.0 / ((1 - r ** 2) ** 2 + (2 * zeta * r) ** 2), lw=0.9, ls=":", color="C3",
+                label="SDOF of ζ_eff (the same area)")
+    ax.set_ylabel("|H(f)|² of the displacement")
+    ax.legend(fontsize=8)
+    ax.grid(True, alpha=0.3)
+    if wave:
+        axes[1, 0].semilogy(f[keep], data["H2_wave"][keep], lw=1.0, color="C2")
+        axes[1, 0].set_ylabel(f"|H(f)|² of the wave height at gauge {adm.get('wave_gauge', '?')}")
+        axes[1, 0].grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel("frequency (Hz)")
+    fig.suptitle(f"Mechanical admittance (thesis eq. 4.30), within the load's band {lo:g}-{hi:g} Hz", fontsize=11)
+    png = rep.save(fig, "admittance")
+    alone = block.get("structure_without_tank", {})
+    acc, disp = block.get("acceleration", {}), block.get("displacement", {})
+    rows = [
+        ["effective damping ratio ζ_eff (%)", fmt(100 * zeta),
+         fmt(100 * alone["effective_damping_ratio"]) if "effective_damping_ratio" in alone else "–", "–"],
+        ["peak acceleration (milli-g)", fmt(acc.get("peak_milli_g")),
+         fmt(alone.get("acceleration", {}).get("peak_milli_g")), fmt(acc.get("peak_ratio_to_without_tank"))],
+        ["RMS acceleration (milli-g)", fmt(acc.get("rms_milli_g")),
+         fmt(alone.get("acceleration", {}).get("rms_milli_g")), fmt(acc.get("rms_ratio_to_without_tank"))],
+        ["peak displacement (m)", fmt(disp.get("peak_m")), fmt(alone.get("displacement", {}).get("peak_m")),
+         fmt(disp.get("peak_ratio_to_without_tank"))],
+        ["RMS displacement (m)", fmt(disp.get("rms_m")), fmt(alone.get("displacement", {}).get("rms_m")),
+         fmt(disp.get("rms_ratio_to_without_tank"))],
+    ]
+    info["admittance"] = {"effective_damping_ratio": zeta, "natural_frequency_Hz": f_n,
+                          "peak_H2_displacement": float(np.max(h2[keep])) if keep.any() else None}
+    return (rl.figure_html(png, "Mechanical admittance |H(f)|² = S(f)·K²/S0(f) of the structure's displacement "
+                                "(and of the wave height). File plots/admittance.png (and .svg).", "admittance")
+            + rl.table(["", "with the tank(s)", "structure alone, same load", "ratio"],
+                       [[esc(c) if k == 0 else c for k, c in enumerate(row)] for row in rows]))
 
 
 def structure_psd(rep, names, info):

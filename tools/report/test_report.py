@@ -135,6 +135,26 @@ def make_run(run_dir, status="completed"):
         "omega1_linear_rad_s": OMEGA, "fluid_mass_kg_per_m": M_W, "dp_m": 0.01,
         "columns": {n: rl.default_unit(n) for n in names},
     }
+    # A structure block and admittance.csv as a coupled run writes them: the admittance of an SDOF
+    # of 0.5 Hz and 2 % damping, and the structure alone's of 1 %.
+    f = np.arange(0.0, 2.0, 0.01)
+    r = f / 0.5
+    h2 = 1.0 / ((1 - r ** 2) ** 2 + (2 * 0.02 * r) ** 2)
+    h2_alone = 1.0 / ((1 - r ** 2) ** 2 + (2 * 0.01 * r) ** 2)
+    with open(os.path.join(run_dir, "admittance.csv"), "w") as fh:
+        fh.write("f_Hz,H2_displacement,H2_wave,H2_structure_alone\n")
+        for k in range(len(f)):
+            fh.write(f"{f[k]:.10g},{h2[k]:.10g},{3 * h2[k]:.10g},{h2_alone[k]:.10g}\n")
+    summary["structure"] = {
+        "damping_ratio": 0.01,
+        "admittance": {"natural_frequency_Hz": 0.5, "effective_damping_ratio": 0.02, "band_Hz": [0.1, 1.5],
+                       "wave_gauge": "right"},
+        "acceleration": {"peak_milli_g": 7.5, "rms_milli_g": 2.0, "peak_ratio_to_without_tank": 0.75,
+                         "rms_ratio_to_without_tank": 0.71},
+        "displacement": {"peak_m": 0.1, "rms_m": 0.03},
+        "structure_without_tank": {"effective_damping_ratio": 0.0101,
+                                   "acceleration": {"peak_milli_g": 10.0, "rms_milli_g": 2.8}},
+    }
     if status != "completed":
         summary["failure"] = "synthetic failure for the test"
     with open(os.path.join(run_dir, "summary.json"), "w") as fh:
@@ -265,7 +285,7 @@ def test_run_report(tmp):
     check("Synthetic sine &lt;test&gt; &amp; co" in text, "title escaped in the header")
     check("<details>" in text and "Resolved case (case.toml)" in text, "case.toml in a collapsible block")
     for stem in ("gauges", "forces", "pressure", "energy", "diagnostics", "base_motion", "hysteresis",
-                 "structure", "structure_psd", "screen_forces"):
+                 "structure", "structure_psd", "admittance", "screen_forces"):
         for ext in ("png", "svg"):
             check(os.path.exists(os.path.join(run_dir, "plots", f"{stem}.{ext}")), f"plots/{stem}.{ext}")
     check(os.path.exists(os.path.join(run_dir, "plots", "snapshot_00.png")), "plots/snapshot_00.png")
@@ -292,6 +312,11 @@ def test_run_report(tmp):
     near(en["from_W_base_J_per_m"], e_ref, 0.01, "E_w from the W_base column")
     near(en["E_w_normalised"], e_ref / (0.5 * M_W * (X0 * OMEGA) ** 2), 0.01, "E'_w (eq. 4.27)")
     check("structure" in a and abs(a["structure"]["x_s"]["psd_peak_hz"] - 0.5) < 0.1, "structure PSD peak at 0.5 Hz")
+    adm = a["structure"].get("admittance", {})
+    check(adm.get("effective_damping_ratio") == 0.02, "admittance: zeta_eff from summary.json")
+    near(adm.get("peak_H2_displacement", 0.0), 1.0 / (2 * 0.02) ** 2, 0.01, "admittance peak 1/(2 zeta)^2 at f_n")
+    check("structure alone, same load" in text and "<td>1.01</td>" in text and "<td>0.75</td>" in text,
+          "the with/without table in the page (zeta 1.01 % alone, peak ratio 0.75)")
     check_in_browser(html_path, tmp)
 
     print("report.py --out, on a failed run with a cut-short CSV and a truncated snapshot")
