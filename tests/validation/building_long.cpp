@@ -28,6 +28,7 @@
 // file's resolved case now (the case changed) fails the test: delete it to start that run again.
 // So the eight runs (about 6.5 h each on one thread of the 2-core machine) can be spread over days,
 // or made with `sloshsph run CASE --checkpoint-every 60 --out DIR` and placed there.
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -130,6 +131,8 @@ bool complete_run(const CaseSpec& spec, const fs::path& dir) {
   return code == 0;
 }
 
+void record_admittance_curve(const fs::path& dir, const std::string& tank, int level, double natural_frequency);
+
 std::optional<Measured> run_building(const std::string& tank, int level) {
   const std::string stem = "building_" + tank + "_" + std::to_string(level) + "mg";
   const CaseSpec spec = resolve_case(read_case_file(testing::case_path(stem + ".toml"), {}));
@@ -160,7 +163,28 @@ std::optional<Measured> run_building(const std::string& tank, int level) {
          s.at("acceleration").at("peak_ratio_to_without_tank").get<double>());
   report(key + "rms_acceleration_ratio_to_without_tank", s.at("acceleration").at("rms_ratio_to_without_tank").get<double>());
   report(key + "wall_seconds", summary.value("wall_time_s", NAN));
+  record_admittance_curve(dir, tank, level, s.at("admittance").at("natural_frequency_Hz").get<double>());
   return m;
+}
+
+// The run's mechanical admittance (admittance.csv, thesis eq. 4.30) beside the structure alone's,
+// up to 2.5 f_n, within the load's 0.05-0.5 Hz band: the comparison plot of docs/validation.md.
+void record_admittance_curve(const fs::path& dir, const std::string& tank, int level, double natural_frequency) {
+  const CsvTable adm = read_csv_table((dir / "admittance.csv").string());
+  const std::vector<double>& f = adm.column("f_Hz");
+  std::string name = tank;
+  for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  testing::Curve c{"admittance_" + tank,
+                   "Mechanical admittance of the displacement, " + name + " tank, " + std::to_string(level) + " milli-g",
+                   "frequency (Hz)", "|H(f)|^2", {}, {}, "structure alone (1% damping)", {}, {}, false, true};
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    if (f[k] < 0.05 || f[k] > 2.5 * natural_frequency) continue;
+    c.x.push_back(f[k]);
+    c.measured.push_back(adm.column("H2_displacement")[k]);
+    c.reference_x.push_back(f[k]);
+    c.reference_y.push_back(adm.column("H2_structure_alone")[k]);
+  }
+  testing::record_curve(c);
 }
 
 // `structure_peak_milli_g`: Table 4.4's STR row, the structure without a tank.
@@ -198,6 +222,12 @@ void compare_with_tables(int level, double structure_peak_milli_g, const std::ve
     zeta_thesis.push_back(row.zeta_percent);
     peak_thesis.push_back(row.peak_milli_g);
   }
+  // The four tanks side by side (x: 1 FR, 2 SF, 3 PF, 4 TLD) against the tables.
+  const std::vector<double> index = {1, 2, 3, 4};
+  testing::record_curve({"effective_damping", "Effective damping, tanks 1 FR, 2 SF, 3 PF, 4 TLD, " + at, "tank",
+                         "zeta_eff (%)", index, zeta, "thesis Table 4.3", index, zeta_thesis});
+  testing::record_curve({"peak_acceleration", "Peak structural acceleration, tanks 1 FR, 2 SF, 3 PF, 4 TLD, " + at,
+                         "tank", "peak a_s (milli-g)", index, peak, "thesis Table 4.4", index, peak_thesis});
   check_at_most("pairs of tanks ordered otherwise than Table 4.3 (effective damping), " + at,
                 order_disagreements(zeta, zeta_thesis), 0.0, "thesis Table 4.3: the same order of FR, SF, PF, TLD");
   check_at_most("pairs of tanks ordered otherwise than Table 4.4 (peak acceleration), " + at,

@@ -174,6 +174,7 @@ struct Curve {
   std::string reference_label;  // e.g. "Koshizuka & Oka (1996), experiment"; empty: none
   std::vector<double> reference_x, reference_y;
   bool reference_as_points = true;  // experiments as markers, theory as a line
+  bool log_y = false;               // a logarithmic ordinate (spectra, admittances)
 };
 
 inline void record_curve(const Curve& c) {
@@ -190,7 +191,8 @@ inline void record_curve(const Curve& c) {
       << ", \"y_label\": " << detail::json_string(c.y_label) << ", \"x\": " << array(c.x)
       << ", \"measured\": " << array(c.measured) << ", \"reference_label\": " << detail::json_string(c.reference_label)
       << ", \"reference_x\": " << array(c.reference_x) << ", \"reference_y\": " << array(c.reference_y)
-      << ", \"reference_as_points\": " << (c.reference_as_points ? "true" : "false") << "}\n";
+      << ", \"reference_as_points\": " << (c.reference_as_points ? "true" : "false")
+      << ", \"log_y\": " << (c.log_y ? "true" : "false") << "}\n";
 }
 
 // A pressure probe's final value beside its hydrostatic one; record_profile_curve sorts them by

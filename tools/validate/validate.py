@@ -129,6 +129,8 @@ def plot_curve(curve, path):
         style = dict(ls="none", marker="o", ms=4, color="k") if curve.get("reference_as_points") else dict(
             lw=1.1, ls="--", color="k")
         ax.plot(ref_x, ref_y, label=curve.get("reference_label") or "reference", **style)
+    if curve.get("log_y"):
+        ax.set_yscale("log")
     ax.set_xlabel(curve.get("x_label", ""))
     ax.set_ylabel(curve.get("y_label", ""))
     ax.set_title(curve.get("title", ""), fontsize=10)
