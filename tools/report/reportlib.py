@@ -479,7 +479,8 @@ def esc(text):
 
 
 def status_badge(status):
-    cls = "ok" if status == "completed" else ("warn" if status in ("interrupted", "unknown", "running") else "bad")
+    cls = "ok" if status == "completed" else (
+        "warn" if status in ("interrupted", "unknown", "running", "stopped", "not started", "no summary") else "bad")
     return f'<span class="badge {cls}">{esc(status)}</span>'
 
 

@@ -385,6 +385,34 @@ def test_sweep_report(tmp, run_dir):
     check(res.returncode == 2, "not a sweep directory: exit 2")
 
 
+def test_compare_report(tmp):
+    print("compare_report.py on a folder of two synthetic coupled runs, one of them still running")
+    folder = os.path.join(tmp, "designs")
+    make_run(os.path.join(folder, "tank_a"))
+    make_run(os.path.join(folder, "tank_b"), status="interrupted")
+    status = os.path.join(tmp, "status.json")
+    with open(status, "w") as fh:
+        json.dump([{"dir": os.path.join(folder, "tank_b"), "state": "running", "time_s": 31.5, "leaked_particles": 2}], fh)
+    res = run_tool("compare_report.py", folder, "--status", status)
+    check(res.returncode == 0, f"compare_report.py exit code 0 ({res.stderr.strip()[:300]})")
+    html_path = os.path.join(folder, "report.html")
+    text = open(html_path, encoding="utf-8").read()
+    check(text.count("<img") == 2, "two figures: admittance and ratios")
+    for stem in ("comparison_admittance", "comparison_ratios"):
+        check(os.path.exists(os.path.join(folder, "plots", stem + ".png")), f"plots/{stem}.png")
+    rows = {r["name"]: r for r in json.load(open(os.path.join(folder, "comparison.json")))}
+    check(sorted(rows) == ["tank_a", "tank_b"], "one row per run directory")
+    near(rows["tank_a"]["zeta_eff_percent"], 2.0, 1e-9, "zeta_eff of tank_a from its summary.json, in %")
+    near(rows["tank_a"]["peak_acceleration_ratio"], 0.75, 1e-9, "peak ratio of tank_a")
+    check(rows["tank_a"]["status"] == "completed", "tank_a: its summary's status")
+    check(rows["tank_b"]["status"] == "running" and rows["tank_b"]["simulated_time_s"] == 31.5
+          and rows["tank_b"]["leaked_particles"] == 2, "tank_b: the state, time and leaks that --status gives")
+    check(">running<" in text, "the running run's state in the table")
+    check_in_browser(html_path, tmp)
+    res = run_tool("compare_report.py", os.path.join(tmp, "nothing-here"))
+    check(res.returncode == 2 and "holds no run directories" in res.stderr, "no run directories: exit 2")
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="sloshsph_report_test_")
     try:
@@ -392,6 +420,7 @@ def main():
         test_vtu_roundtrip(tmp)
         run_dir = test_run_report(tmp)
         test_sweep_report(tmp, run_dir)
+        test_compare_report(tmp)
     except AssertionError as err:
         print(f"FAILED: {err}")
         print(f"(files kept in {tmp})")
