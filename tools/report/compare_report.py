@@ -27,11 +27,6 @@ import reportlib as rl
 from reportlib import esc, fmt, plt
 
 
-def sub_run_dirs(folder):
-    return [os.path.join(folder, name) for name in sorted(os.listdir(folder))
-            if name != "plots" and rl.is_run_dir(os.path.join(folder, name))]
-
-
 def get(tree, *keys):
     """tree[k0][k1]... as a float, or None when missing or not a number."""
     for k in keys:
@@ -184,7 +179,7 @@ def ratios_figure(rows, save):
 def build(folder, out_dir, args):
     notes = []
     states = read_status(args.status)
-    rows = [run_row(d, notes, states.get(os.path.basename(d))) for d in sub_run_dirs(folder)]
+    rows = [run_row(d, notes, states.get(os.path.basename(d))) for d in rl.sub_run_dirs(folder)]
     plots = os.path.join(out_dir, "plots")
 
     def save(fig, stem):
@@ -214,7 +209,7 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    if not os.path.isdir(args.folder) or not sub_run_dirs(args.folder):
+    if not os.path.isdir(args.folder) or not rl.sub_run_dirs(args.folder):
         print(f"compare_report.py: {args.folder} holds no run directories", file=sys.stderr)
         return 2
     out_dir = os.path.abspath(args.out or args.folder)

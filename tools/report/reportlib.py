@@ -247,6 +247,12 @@ def is_run_dir(path):
     return os.path.isdir(path) and any(os.path.exists(os.path.join(path, f)) for f in RUN_FILES)
 
 
+def sub_run_dirs(folder):
+    """The run directories in `folder` (a sweep's points, a folder of runs to compare), sorted."""
+    return [os.path.join(folder, name) for name in sorted(os.listdir(folder))
+            if name != "plots" and is_run_dir(os.path.join(folder, name))]
+
+
 # --------------------------------------------------------------------------------------------
 # Signal analysis
 

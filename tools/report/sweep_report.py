@@ -95,20 +95,11 @@ class Point:
         self.run = None
 
 
-def sub_run_dirs(sweep_dir):
-    out = []
-    for name in sorted(os.listdir(sweep_dir)):
-        path = os.path.join(sweep_dir, name)
-        if name != "plots" and rl.is_run_dir(path):
-            out.append(path)
-    return out
-
-
 def load_points(sweep_dir, notes, args):
     """Points from frequency_response.csv (or rebuilt from the run directories)."""
     csv_path = os.path.join(sweep_dir, "frequency_response.csv")
     runs = {}
-    for d in sub_run_dirs(sweep_dir):
+    for d in rl.sub_run_dirs(sweep_dir):
         runs[d] = rl.Run(d)
     header, points = [], []
     if os.path.exists(csv_path):
@@ -443,7 +434,7 @@ def parse_args(argv):
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
     d = args.sweep_dir
-    if not os.path.isdir(d) or not (os.path.exists(os.path.join(d, "frequency_response.csv")) or sub_run_dirs(d)):
+    if not os.path.isdir(d) or not (os.path.exists(os.path.join(d, "frequency_response.csv")) or rl.sub_run_dirs(d)):
         print(f"sweep_report.py: {d} is not a sweep directory (no frequency_response.csv and no run "
               "directories)", file=sys.stderr)
         return 2
