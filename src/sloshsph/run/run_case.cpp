@@ -318,8 +318,22 @@ int resume_run(const std::string& dir, const RunOptions& options) {
 
 namespace {
 
+// A warning for each of the first steps whose pressure solve found a block of fluid that no p = 0
+// condition reaches and set it to p = 0 (IsphScheme::pin_unanchored_blocks); summary.json counts
+// them all.
+void warn_pinned(const Simulation& sim) {
+  constexpr std::size_t kWarnings = 10;
+  if (sim.last_step_pinned() == 0 || sim.pinned_steps() > kWarnings) return;
+  std::fprintf(stderr,
+               "sloshsph: warning: t = %.6g s: %zu fluid particles in a pressure block that no free surface reaches "
+               "(a jet pressed against a wall?) set to p = 0 for this step%s\n",
+               sim.time(), sim.last_step_pinned(),
+               sim.pinned_steps() == kWarnings ? " (further cases are counted in summary.json, not shown)" : "");
+}
+
 int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress& progress, const RunOptions& options) {
   const std::string& dir = files.dir;
+  const double counted_since = sim.time();
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return progress.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   Progress bar(spec.time.end, options.progress);
@@ -344,6 +358,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
         break;
       }
       sim.step();
+      warn_pinned(sim);
       if (sim.time() >= progress.next_sample - tol || sim.finished()) {
         write_sample();
         while (progress.next_sample <= sim.time() + tol) progress.next_sample += spec.output.sample_interval;
@@ -381,6 +396,9 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["wall_particles"] = p.n_wall();
   s["leaked_particles"] = sim.leaked();
   s["wall_contacts"] = sim.wall_contacts();
+  s["pressure_pinned"] = {{"steps", sim.pinned_steps()},
+                          {"particles", sim.pinned_particles()},
+                          {"counted_since_s", counted_since}};  // this process's start (not in checkpoints)
   s["particle_steps_per_second"] = wall > 0 ? total_particles * sim.steps() / wall : 0.0;
   s["fluid_particle_steps_per_second"] =
       wall > 0 ? static_cast<double>(sim.scene().initial_fluid_count) * sim.steps() / wall : 0.0;

@@ -287,6 +287,10 @@ void Simulation::step() {
   time_ = fixed ? std::min(steps_ * spec_.time.dt, spec_.time.end) : time_ + dt;
   last_dt_ = dt;
   max_speed_ = scheme_.diagnostics().max_speed;
+  if (const std::size_t pinned = scheme_.diagnostics().pinned_particles; pinned > 0) {
+    ++pinned_steps_;
+    pinned_particles_ += pinned;
+  }
   check_state();
   remove_leaked();
 }

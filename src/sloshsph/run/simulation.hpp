@@ -79,6 +79,13 @@ class Simulation {
   std::size_t leaked() const { return leaks_.size(); }
   // Fluid particles stopped at the tank walls since t = 0 (scheme.wall_contact).
   std::size_t wall_contacts() const { return wall_contacts_; }
+  // Implicit PPE: steps in which a block of fluid that no p = 0 condition reaches was set to p = 0
+  // (IsphScheme::pin_unanchored_blocks), and its particles summed over those steps; counted since
+  // this object was made (a resumed run counts from the resume: not kept in checkpoints, so that
+  // checkpoints stay readable across versions). last_step_pinned(): particles in the last step.
+  std::size_t pinned_steps() const { return pinned_steps_; }
+  std::size_t pinned_particles() const { return pinned_particles_; }
+  std::size_t last_step_pinned() const { return scheme_.diagnostics().pinned_particles; }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
   double max_speed() const { return max_speed_; }
   double linear_omega() const { return linear_omega_; }  // first_sloshing_omega of the case
@@ -125,6 +132,7 @@ class Simulation {
   std::vector<double> gauge_datum_;      // surface height of each gauge at t = 0
   std::vector<LeakRecord> leaks_;
   std::size_t wall_contacts_ = 0;
+  std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;

@@ -78,9 +78,12 @@ class IsphScheme {
   template <class K> void stage_with(const K& kernel, IsphStage stage, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
   template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
+  template <class K> void assemble_ppe(const K& kernel, const Particles& p, const StepInput& in);
+  std::size_t pin_unanchored_blocks(const Particles& p);
   template <class K>
   double assemble_ppe_row(const K& kernel, const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
   KrylovReport solve_ppe_system(bool multigrid);
+  KrylovReport solve_assembled_ppe(bool multigrid);
   void update_neighbours(Particles& p);
   double clip(double pressure) const;
   void mark_repulsive_layer(const Particles& p);

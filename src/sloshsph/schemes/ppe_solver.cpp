@@ -160,4 +160,37 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
   return report;
 }
 
+namespace {
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t r) {
+  while (parent[r] != r) r = parent[r] = parent[parent[r]];  // path halving
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A) {
+  const std::size_t n = A.rows();
+  std::vector<std::uint32_t> parent(n);
+  for (std::size_t r = 0; r < n; ++r) parent[r] = static_cast<std::uint32_t>(r);
+  std::vector<char> anchored(n, 0);
+  for (std::size_t r = 0; r < n; ++r) {
+    double sum = 0.0, diagonal = 0.0;
+    for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) {
+      sum += A.value[k];
+      if (A.column[k] == r) diagonal = A.value[k];
+      const std::uint32_t a = find_root(parent, static_cast<std::uint32_t>(r)), b = find_root(parent, A.column[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+    anchored[r] = std::abs(sum) > 1e-8 * std::abs(diagonal) || diagonal == 0.0;
+  }
+  std::vector<char> root_anchored(n, 0);
+  for (std::size_t r = 0; r < n; ++r)
+    if (anchored[r]) root_anchored[find_root(parent, static_cast<std::uint32_t>(r))] = 1;
+  std::vector<std::uint32_t> rows;
+  for (std::size_t r = 0; r < n; ++r)
+    if (!root_anchored[find_root(parent, static_cast<std::uint32_t>(r))]) rows.push_back(static_cast<std::uint32_t>(r));
+  return rows;
+}
+
 }  // namespace sloshsph

@@ -57,6 +57,15 @@ struct BicgstabWork {
   std::size_t memory_bytes() const;
 };
 
+// The rows of blocks of A that no anchored row reaches: A x = b splits into independent blocks (the
+// connected components of the graph of A's entries, in either direction), and a block is singular
+// when none of its rows is anchored, that is when in every row the entries sum to zero
+// (|sum_k A_rk| <= 1e-8 |A_rr|): the pure-Neumann Laplacian of a cluster of fluid that no p = 0
+// condition reaches, whose pressure level is undetermined and whose equations, with a right side
+// that does not sum to zero, have no solution. Returns those rows in increasing order (empty when
+// every block is anchored). Serial union-find over the entries: O(entries).
+std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A);
+
 // Solves A x = b from the initial guess in x: BiCGSTAB (van der Vorst 1992) with a right
 // preconditioner, to |b - A x| <= tolerance |b| or max_iterations. The preconditioner is
 // diag(A) (Jacobi), or one V-cycle of `multigrid` when given (built for A by build_multigrid,

@@ -28,6 +28,7 @@ struct StepDiagnostics {
   std::size_t free_surface = 0;  // particles flagged free surface this step
   int solver_iterations = 0;     // implicit PPE (explicit: sweeps)
   double solver_residual = 0.0;  // implicit PPE, relative
+  std::size_t pinned_particles = 0;  // implicit PPE: fluid of blocks no p = 0 reaches, set to p = 0
   bool neighbours_rebuilt = false;
 };
 

@@ -127,5 +127,50 @@ TEST(PpeSolver, SameBitsOnOneAndTwoThreads) {
   EXPECT_EQ(one.first, two.first);  // bitwise
 }
 
+// rows_without_anchor: a matrix of two independent blocks. The grid Laplacian above is anchored
+// at its edges (a missing neighbour leaves its row summing to 1 > 0: a p = 0 condition there).
+// The second block is the pure-Neumann Laplacian of three fluid rows (a triangle: diagonal 2, -1
+// to each other; every row sums to 0) and a wall-like row that refers to one of them while no
+// fluid row refers to it (connected in one direction only). Reference: that block's four rows.
+SparseRows grid_and_cluster(double cluster_diagonal) {
+  const int n = 4;
+  const SparseRows grid = convection_diffusion(n, 0.0);
+  const std::size_t m = grid.rows();
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(m + 4);
+  for (std::size_t r = 0; r < m; ++r)
+    for (std::size_t k = grid.slot_begin[r]; k < grid.slot_end[r]; ++k) rows[r].push_back({grid.column[k], grid.value[k]});
+  const auto c = static_cast<std::uint32_t>(m);
+  rows[m] = {{c, cluster_diagonal}, {c + 1, -1.0}, {c + 2, -1.0}};
+  rows[m + 1] = {{c + 1, 2.0}, {c, -1.0}, {c + 2, -1.0}};
+  rows[m + 2] = {{c + 2, 2.0}, {c, -1.0}, {c + 1, -1.0}};
+  rows[m + 3] = {{c + 3, 0.5}, {c, -0.5}};  // the wall row: a weighted average of one fluid row
+  SparseRows A;
+  std::vector<std::size_t> capacity;
+  for (const auto& row : rows) capacity.push_back(row.size());
+  A.reserve_rows(capacity);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::size_t slot = A.slot_begin[r];
+    for (const auto& [column, value] : rows[r]) {
+      A.column[slot] = column;
+      A.value[slot++] = value;
+    }
+    A.slot_end[r] = slot;
+  }
+  return A;
+}
+
+TEST(PpeSolver, FindsTheBlockThatNoAnchorReaches) {
+  const SparseRows A = grid_and_cluster(2.0);
+  const std::vector<std::uint32_t> expected = {16, 17, 18, 19};
+  EXPECT_EQ(rows_without_anchor(A), expected);
+  // One row of the cluster that does not sum to zero (a missing neighbour at p = 0) anchors it.
+  EXPECT_TRUE(rows_without_anchor(grid_and_cluster(2.5)).empty());
+  // The singular block makes the solve fail (its right side does not sum to zero): why the
+  // scheme sets such blocks to p = 0 before solving.
+  std::vector<double> b(A.rows(), 1.0), x(A.rows(), 0.0);
+  BicgstabWork work;
+  EXPECT_FALSE(solve_bicgstab(A, b, x, 1e-8, 500, work).converged);
+}
+
 }  // namespace
 }  // namespace sloshsph
