@@ -102,7 +102,8 @@ class Simulation {
  private:
   double next_dt() const;
   void settle();
-  void check_state();
+  void check_state() const;                         // at the current time and step
+  void check_state(const std::string& when) const;  // RunFailure naming `when` otherwise
   void remove_leaked();
   // Spacing of the sampled container distance (leak test, first wall-contact test), m.
   double container_grid() const { return 0.5 * spec_.particles.dp; }
