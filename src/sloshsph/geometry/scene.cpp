@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
@@ -37,6 +38,27 @@ void check_probes(const CaseSpec& spec, const TankGeometry& tank) {
   }
 }
 
+// The thesis free surface (p = 0 on flagged particles) with the implicit solve has run away
+// within a few dozen steps when dt sqrt(g/dp) was 0.031 (linear_sloshing.toml at dp = 10 mm,
+// dt = 1 ms: step 50-65) and 0.050 (building_sf_10mg.toml: dp = 0.1 m, dt = 5 ms, within 0.15 s of
+// the settle), and ran at 0.022 (dp = 5 mm, dt = 0.5 ms) and 0.0099 (dp = 0.1 m, dt = 1 ms).
+// Measured 2026-12-04 (docs/validation/notes.md); an empirical bound, not a stability theory.
+void add_time_step_warnings(const CaseSpec& spec, std::vector<std::string>& warnings) {
+  constexpr double kThesisImplicitBound = 0.025;
+  const SchemeSpec& sc = spec.scheme;
+  if (sc.type != "isph" || sc.pressure != PressureSolve::implicit_krylov || sc.free_surface != FreeSurfaceModel::thesis)
+    return;
+  const double ratio = spec.time.dt * std::sqrt(spec.fluid.gravity / spec.particles.dp);
+  if (ratio <= kThesisImplicitBound) return;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "scheme.free_surface = \"thesis\" with the implicit solve has run away at time.dt * sqrt(g / dp) "
+                "of 0.031 and above (here %.3g); it ran at 0.022 and below: consider time.dt <= %.3g s, or the "
+                "default free surface \"air\"",
+                ratio, kThesisImplicitBound / std::sqrt(spec.fluid.gravity / spec.particles.dp));
+  warnings.push_back(text);
+}
+
 }  // namespace
 
 Scene build_scene(const CaseSpec& spec) {
@@ -45,6 +67,7 @@ Scene build_scene(const CaseSpec& spec) {
 
   Scene scene;
   scene.tank = tank;
+  add_time_step_warnings(spec, scene.warnings);
   scene.dp = spec.particles.dp;
   scene.h = spec.particles.kernel_ratio * spec.particles.dp;
   scene.still_level = tank->y_bottom + spec.fill.depth;

@@ -194,7 +194,13 @@ void Simulation::settle() {
     max_speed_ = scheme_.diagnostics().max_speed;
     char when[96];
     std::snprintf(when, sizeof when, "while the fluid settled (%.4g of %.4g s)", t, duration);
-    check_state(when);
+    try {
+      check_state(when);
+    } catch (const RunFailure& e) {
+      std::string what = e.what();
+      for (const std::string& w : scene_.warnings) what += "; warning given for this case: " + w;
+      throw RunFailure(what);
+    }
     // A long settle (fine dp, seconds of settling) must not hold up SIGINT/SIGTERM: there is
     // nothing to keep yet, so the command stops at once with exit code 4 (run_case.cpp).
     if (stop_requested() && t < duration - 1e-12) {
