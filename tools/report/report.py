@@ -698,6 +698,51 @@ def structure_section(rep):
     return "".join(parts)
 
 
+def free_decay_section(rep):
+    """After the base stops (excitation.stop > 0), each gauge's free decay: its frequency and its
+    damping ratio from the logarithmic decrement of the half heights per period (5 Hz low-passed,
+    from one excitation period after the stop). None without a stop or a free decay of 3 periods."""
+    run = rep.run
+    stop = run.case_float("excitation.stop")
+    if not stop or stop <= 0 or len(run.time) < 8:
+        return None
+    period = 2 * math.pi / run.omega() if run.omega() else 0.0
+    t_start = stop + period
+    rows, info, curves = [], {}, []
+    for name in [n for n in run.names if n.startswith("eta:")]:
+        y = rep.filtered_series(name)
+        res = rl.free_decay(run.time, y if y is not None else run.columns[name], t_start)
+        if res is None:
+            continue
+        curves.append((name, res))
+        info[name] = {k: v for k, v in res.items() if k not in ("times", "half_heights")}
+        rows.append([esc(name), fmt(res["omega_rad_s"]), fmt(res["frequency_hz"]),
+                     f"{100 * res['zeta']:.3g} ± {100 * res['zeta_se']:.2g}", str(res["periods"]),
+                     f"{fmt(res['first_half_height'])} → {fmt(res['last_half_height'])}"])
+    if not rows:
+        return None
+    rep.analysis["free_decay"] = {"from_s": t_start, "gauges": info,
+                                  "method": "half heights (max - min)/2 per period from the zero up-crossings, "
+                                            "zeta = -slope/omega of a least-squares line through their logarithms"}
+    fig, ax = plt.subplots(figsize=(10, 3.6), constrained_layout=True)
+    for name, res in curves:
+        times = np.array(res["times"])
+        ax.semilogy(times, res["half_heights"], "o", ms=3, label=f"{name}: ζ = {100 * res['zeta']:.3g} %")
+        ax.semilogy(times, res["half_heights"][0] * np.exp(-res["zeta"] * res["omega_rad_s"] * (times - times[0])),
+                    lw=0.8, color="0.4")
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("half wave height (m)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    png = rep.save(fig, "free_decay")
+    return (f"<p>The base stopped at t = {fmt(stop)} s; from t = {fmt(t_start)} s each gauge's half wave "
+            "height per period (5 Hz low-passed) falls as exp(−ζωt): ζ from the slope of its logarithm "
+            "(± the standard error of the fit).</p>"
+            + rl.table(["gauge", "ω (rad/s)", "f (Hz)", "ζ (%)", "periods", "half height (m)"], rows)
+            + rl.figure_html(png, "Half wave heights per period and the fitted decay. File plots/free_decay.png.",
+                             "free decay"))
+
+
 def admittance_part(rep, info):
     """The mechanical admittance |H(f)|² of admittance.csv (thesis eq. 4.30) beside the structure
     alone's and beside the SDOF of the effective damping ratio (the same area, Vickery et al.
@@ -822,6 +867,9 @@ def build(rep):
     if run.is_harmonic():
         sections.append(("steady", "Steady-state response", guarded(rep, "steady state", steady_section, rep,
                                                                     steady_note if isinstance(steady_note, str) else "")))
+    decay = guarded(rep, "free decay", free_decay_section, rep)
+    if decay:
+        sections.append(("decay", "Free decay", decay))
     struct = guarded(rep, "structure", structure_section, rep)
     if struct:
         sections.append(("structure", "Structure", struct))

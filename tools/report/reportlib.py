@@ -387,6 +387,41 @@ def energy_per_cycle(t, force, displacement, window, force_is_interval_mean=True
     return float(np.sum(f_interval[inside] * dx[inside]) / cycles)
 
 
+def free_decay(t, x, t_start, min_periods=3):
+    """Damping ratio and frequency of a free decay after t_start (a gauge after the base stopped).
+
+    The period is the mean spacing of the zero up-crossings of x - mean(x); in each whole period
+    from t_start the half height (max - min) / 2 is taken, and zeta = -slope / omega from a least-
+    squares line through the logarithms of the half heights against time (the standard error of
+    the slope gives zeta_se). None when fewer than `min_periods` whole periods follow t_start."""
+    m = (t >= t_start) & np.isfinite(x)
+    t, x = t[m], x[m]
+    if len(t) < 8:
+        return None
+    x = x - np.mean(x)
+    up = np.where((x[:-1] < 0) & (x[1:] >= 0))[0]
+    crossings = t[up] - x[up] * (t[up + 1] - t[up]) / (x[up + 1] - x[up])
+    if len(crossings) < min_periods + 1:
+        return None
+    period = float((crossings[-1] - crossings[0]) / (len(crossings) - 1))
+    omega = 2 * math.pi / period
+    heights, times = [], []
+    k = 0
+    while crossings[0] + (k + 1) * period <= t[-1]:
+        w = (t >= crossings[0] + k * period) & (t < crossings[0] + (k + 1) * period)
+        heights.append(0.5 * float(x[w].max() - x[w].min()))
+        times.append(float(crossings[0] + (k + 0.5) * period))
+        k += 1
+    if len(heights) < min_periods or min(heights) <= 0:
+        return None
+    coef, cov = np.polyfit(times, np.log(heights), 1, cov=True) if len(heights) > 3 else (
+        np.polyfit(times, np.log(heights), 1), np.full((2, 2), np.nan))
+    return {"omega_rad_s": omega, "frequency_hz": omega / (2 * math.pi), "periods": len(heights),
+            "zeta": float(-coef[0] / omega), "zeta_se": float(math.sqrt(cov[0, 0]) / omega),
+            "first_half_height": heights[0], "last_half_height": heights[-1],
+            "times": times, "half_heights": heights}
+
+
 def work_increase_per_cycle(t, work, window):
     """(W(t_end) - W(t_start)) / cycles from the cumulative work column W_base."""
     if window is None or len(t) < 2:

@@ -385,6 +385,35 @@ def test_sweep_report(tmp, run_dir):
     check(res.returncode == 2, "not a sweep directory: exit 2")
 
 
+def test_free_decay_report(tmp):
+    print("report.py on a synthetic free decay (the base stops, the wave decays at a known rate)")
+    run_dir = os.path.join(tmp, "decay")
+    os.makedirs(run_dir)
+    omega_d, zeta, stop = 5.0, 0.02, 2.0
+    t = np.round(np.arange(0.0, 20.0 + 0.005, 0.005), 10)
+    eta = np.where(t < stop, 0.0, 0.01 * np.exp(-zeta * omega_d * (t - stop)) * np.sin(omega_d * (t - stop)))
+    with open(os.path.join(run_dir, "timeseries.csv"), "w") as fh:
+        fh.write("time,x_base,eta:right\n")
+        for k in range(len(t)):
+            fh.write(f"{t[k]:.10g},0,{eta[k]:.12g}\n")
+    with open(os.path.join(run_dir, "summary.json"), "w") as fh:
+        json.dump({"status": "completed", "excitation_omega_rad_s": omega_d, "simulated_time_s": 20.0}, fh)
+    with open(os.path.join(run_dir, "case.toml"), "w") as fh:
+        fh.write('title = "free decay"\n\n[excitation]\ntype = "harmonic"\namplitude = 0.001\n'
+                 f'stop = {stop}\n\n[fill]\ndepth = 0.1\n')
+    res = run_tool("report.py", run_dir, "--snapshots", "0", "--cutoff", "0")
+    check(res.returncode == 0, f"exit code 0 ({res.stderr.strip()[:300]})")
+    a = json.load(open(os.path.join(run_dir, "analysis.json")))
+    g = a.get("free_decay", {}).get("gauges", {}).get("eta:right")
+    check(g is not None, "a free-decay entry for the gauge")
+    # Reference: the signal's own zeta (the envelope exp(-zeta omega t) with omega = omega_d here).
+    near(g["zeta"], zeta, 0.02, "zeta from the decay of the half heights")
+    near(g["omega_rad_s"], omega_d, 0.002, "omega from the zero up-crossings")
+    check(os.path.exists(os.path.join(run_dir, "plots", "free_decay.png")), "plots/free_decay.png")
+    text = open(os.path.join(run_dir, "report.html"), encoding="utf-8").read()
+    check("Free decay" in text, "the section in the page")
+
+
 def test_compare_report(tmp):
     print("compare_report.py on a folder of two synthetic coupled runs, one of them still running")
     folder = os.path.join(tmp, "designs")
@@ -420,6 +449,7 @@ def main():
         test_vtu_roundtrip(tmp)
         run_dir = test_run_report(tmp)
         test_sweep_report(tmp, run_dir)
+        test_free_decay_report(tmp)
         test_compare_report(tmp)
     except AssertionError as err:
         print(f"FAILED: {err}")
