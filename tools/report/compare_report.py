@@ -123,13 +123,11 @@ def admittance_figure(folder, rows, save):
         path = os.path.join(folder, r["name"], "admittance.csv")
         if not os.path.exists(path) or r["natural_frequency_Hz"] is None:
             continue
-        data = np.genfromtxt(path, delimiter=",", names=True)
-        lo, hi = (r["band_Hz"] or [0.0, np.inf])[:2]
-        keep = (data["f_Hz"] >= lo) & (data["f_Hz"] <= min(hi, 2.5 * r["natural_frequency_Hz"]))
+        data = rl.read_admittance(path, r["band_Hz"], r["natural_frequency_Hz"])
         label = f"{r['name']}: ζ_eff = {fmt(r['zeta_eff_percent'], 3)} %"
-        ax.semilogy(data["f_Hz"][keep], data["H2_displacement"][keep], lw=1.0, label=label)
-        if alone is None and "H2_structure_alone" in data.dtype.names:
-            alone = (data["f_Hz"][keep], data["H2_structure_alone"][keep])
+        ax.semilogy(data["f_Hz"], data["H2_displacement"], lw=1.0, label=label)
+        if alone is None and "H2_structure_alone" in data:
+            alone = (data["f_Hz"], data["H2_structure_alone"])
         drawn += 1
     if not drawn:
         plt.close(fig)

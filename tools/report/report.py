@@ -752,28 +752,26 @@ def admittance_part(rep, info):
     adm = block.get("admittance") if isinstance(block, dict) else None
     if not os.path.exists(path) or not isinstance(adm, dict):
         return ""
-    data = np.genfromtxt(path, delimiter=",", names=True)
-    f, h2 = data["f_Hz"], data["H2_displacement"]
     f_n, zeta = float(adm["natural_frequency_Hz"]), float(adm["effective_damping_ratio"])
-    lo, hi = adm.get("band_Hz", [f[1], f[-1]])
-    wave = "H2_wave" in data.dtype.names and np.any(data["H2_wave"] > 0)
+    data = rl.read_admittance(path, adm.get("band_Hz"), f_n)
+    lo, hi = adm.get("band_Hz", [data["f_Hz"][0], data["f_Hz"][-1]])[:2]
+    f, h2 = data["f_Hz"], data["H2_displacement"]
+    wave = "H2_wave" in data and np.any(data["H2_wave"] > 0)
     fig, axes = plt.subplots(2 if wave else 1, 1, figsize=(10, 6.6 if wave else 3.8), squeeze=False,
                              constrained_layout=True)
     ax = axes[0, 0]
-    # The measured curves only where the load has power; up to 2.5 f_n, where the tank acts.
-    keep = (f >= lo) & (f <= min(hi, 2.5 * f_n))
-    ax.semilogy(f[keep], h2[keep], lw=1.0, label=f"with the tank(s): ζ_eff = {100 * zeta:.3g} %")
-    if "H2_structure_alone" in data.dtype.names:
-        ax.semilogy(f[keep], data["H2_structure_alone"][keep], lw=0.9, ls="--", color="0.3",
+    ax.semilogy(f, h2, lw=1.0, label=f"with the tank(s): ζ_eff = {100 * zeta:.3g} %")
+    if "H2_structure_alone" in data:
+        ax.semilogy(f, data["H2_structure_alone"], lw=0.9, ls="--", color="0.3",
                     label=f"structure alone, ζ = {100 * float(block.get('damping_ratio', 0.0)):.3g} %")
-    r = f[keep] / f_n
-    ax.semilogy(f[keep], 1.0 / ((1 - r ** 2) ** 2 + (2 * zeta * r) ** 2), lw=0.9, ls=":", color="C3",
+    r = f / f_n
+    ax.semilogy(f, 1.0 / ((1 - r ** 2) ** 2 + (2 * zeta * r) ** 2), lw=0.9, ls=":", color="C3",
                 label="SDOF of ζ_eff (the same area)")
     ax.set_ylabel("|H(f)|² of the displacement")
     ax.legend(fontsize=8)
     ax.grid(True, alpha=0.3)
     if wave:
-        axes[1, 0].semilogy(f[keep], data["H2_wave"][keep], lw=1.0, color="C2")
+        axes[1, 0].semilogy(f, data["H2_wave"], lw=1.0, color="C2")
         axes[1, 0].set_ylabel(f"|H(f)|² of the wave height at gauge {adm.get('wave_gauge', '?')}")
         axes[1, 0].grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("frequency (Hz)")
@@ -794,7 +792,7 @@ def admittance_part(rep, info):
          fmt(disp.get("rms_ratio_to_without_tank"))],
     ]
     info["admittance"] = {"effective_damping_ratio": zeta, "natural_frequency_Hz": f_n,
-                          "peak_H2_displacement": float(np.max(h2[keep])) if keep.any() else None}
+                          "peak_H2_displacement": float(np.max(h2)) if len(h2) else None}
     return (rl.figure_html(png, "Mechanical admittance |H(f)|² = S(f)·K²/S0(f) of the structure's displacement "
                                 "(and of the wave height). File plots/admittance.png (and .svg).", "admittance")
             + rl.table(["", "with the tank(s)", "structure alone, same load", "ratio"],

@@ -247,6 +247,17 @@ def is_run_dir(path):
     return os.path.isdir(path) and any(os.path.exists(os.path.join(path, f)) for f in RUN_FILES)
 
 
+def read_admittance(path, band, natural_frequency):
+    """admittance.csv (thesis eq. 4.30: f_Hz, H2_displacement, H2_wave, H2_structure_alone, ...)
+    as {column: array}, kept within the load's band (lo, hi) (outside it the force has no power;
+    None: the record less f = 0) and up to 2.5 f_n (beyond it a tank does nothing to see)."""
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    f = data["f_Hz"]
+    lo, hi = band[:2] if band else (f[1], f[-1])
+    keep = (f >= lo) & (f <= min(hi, 2.5 * natural_frequency))
+    return {name: data[name][keep] for name in data.dtype.names}
+
+
 def sub_run_dirs(folder):
     """The run directories in `folder` (a sweep's points, a folder of runs to compare), sorted."""
     return [os.path.join(folder, name) for name in sorted(os.listdir(folder))
