@@ -48,14 +48,15 @@ void add_time_step_warnings(const CaseSpec& spec, std::vector<std::string>& warn
   const SchemeSpec& sc = spec.scheme;
   if (sc.type != "isph" || sc.pressure != PressureSolve::implicit_krylov || sc.free_surface != FreeSurfaceModel::thesis)
     return;
-  const double ratio = spec.time.dt * std::sqrt(spec.fluid.gravity / spec.particles.dp);
+  const double rate = std::sqrt(spec.fluid.gravity / spec.particles.dp);  // 1/s
+  const double ratio = spec.time.dt * rate;
   if (ratio <= kThesisImplicitBound) return;
   char text[400];
   std::snprintf(text, sizeof text,
                 "scheme.free_surface = \"thesis\" with the implicit solve has run away at time.dt * sqrt(g / dp) "
                 "of 0.031 and above (here %.3g); it ran at 0.022 and below: consider time.dt <= %.3g s, or the "
                 "default free surface \"air\"",
-                ratio, kThesisImplicitBound / std::sqrt(spec.fluid.gravity / spec.particles.dp));
+                ratio, kThesisImplicitBound / rate);
   warnings.push_back(text);
 }
 
