@@ -1,7 +1,10 @@
-// sloshsph modes CASE [--count N] [--json] [--set KEY=VALUE]...
-// The first natural sloshing modes of the case's tank and fill (linear/modal.hpp).
+// sloshsph modes CASE [--count N] [--json] [--tank-damping Z]... [--set KEY=VALUE]...
+// The first natural sloshing modes of the case's tank and fill (linear/modal.hpp) and, for a case
+// with [structure], the tanks as a linear equivalent TMD on it (run/tank_as_tmd.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -9,45 +12,142 @@
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/linear/closed_form.hpp"
 #include "sloshsph/linear/modal.hpp"
+#include "sloshsph/run/tank_as_tmd.hpp"
 
 namespace sloshsph::app {
+namespace {
+
+// The tank damping ratios of the estimate: a fixed spread, the user's, and the optimum last.
+std::vector<EquivalentTmdResponse> tmd_responses(const TankAsTmd& t, std::vector<double> zetas) {
+  for (double z : {0.005, 0.01, 0.02, 0.03, 0.05, 0.10}) zetas.push_back(z);
+  std::sort(zetas.begin(), zetas.end());
+  zetas.erase(std::unique(zetas.begin(), zetas.end()), zetas.end());
+  std::vector<EquivalentTmdResponse> out;
+  for (double z : zetas) out.push_back(equivalent_tmd_response(t.tmd, z, t.band_low, t.band_high));
+  out.push_back(optimal_equivalent_tmd(t.tmd, t.band_low, t.band_high));
+  return out;
+}
+
+nlohmann::json tmd_json(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses) {
+  const SdofSpec& s = t.tmd.structure;
+  nlohmann::json j = {{"liquid_mass_kg", t.liquid_mass},
+                      {"convective_mass_fraction", t.convective_fraction},
+                      {"convective_mass_kg", t.tmd.convective_mass},
+                      {"rigid_mass_kg", t.tmd.rigid_mass},
+                      {"mass_ratio", t.tmd.convective_mass / s.mass},
+                      {"structure_frequency_Hz", s.natural_frequency()},
+                      {"structure_damping_ratio", s.damping_ratio()},
+                      {"convective_frequency_Hz", t.tmd.convective_omega / (2.0 * std::numbers::pi)},
+                      {"tuning_ratio", t.tmd.convective_omega / s.angular_frequency()},
+                      {"band_Hz", {t.band_low, t.band_high}},
+                      {"band_from_load", t.band_from_load}};
+  auto row = [](const EquivalentTmdResponse& r) {
+    return nlohmann::json{{"tank_damping_ratio", r.zeta_tank},
+                          {"effective_damping_ratio", r.effective_damping},
+                          {"displacement_rms_ratio", r.displacement_rms_ratio},
+                          {"acceleration_rms_ratio", r.acceleration_rms_ratio}};
+  };
+  j["responses"] = nlohmann::json::array();
+  for (std::size_t k = 0; k + 1 < responses.size(); ++k) j["responses"].push_back(row(responses[k]));
+  j["optimum"] = row(responses.back());
+  return j;
+}
+
+void print_tmd(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses) {
+  const SdofSpec& s = t.tmd.structure;
+  std::printf("\nequivalent TMD (mode 1 as a mass on a spring, linear; structure/equivalent_tmd.hpp):\n");
+  std::printf("  liquid %.6g t, of which mode 1 sloshes %.6g t (%.1f%%); mass ratio m_1 / M_s = %.4f%%\n",
+              t.liquid_mass / 1e3, t.tmd.convective_mass / 1e3, 100.0 * t.convective_fraction,
+              100.0 * t.tmd.convective_mass / s.mass);
+  std::printf("  rigid with the structure: %.6g t; structure %.6g Hz, zeta %.3f%%; tuning f_1 / f_s = %.4f\n",
+              t.tmd.rigid_mass / 1e3, s.natural_frequency(), 100.0 * s.damping_ratio(),
+              t.tmd.convective_omega / s.angular_frequency());
+  std::printf("  white-noise force over %.4g-%.4g Hz (%s); zeta_eff by the area method, as summary.json\n",
+              t.band_low, t.band_high, t.band_from_load ? "the load's band" : "0.01-10 f_s: the load is not noise");
+  std::printf("  %12s %12s %16s %16s\n", "tank zeta", "zeta_eff", "RMS x / alone", "RMS a / alone");
+  for (std::size_t k = 0; k < responses.size(); ++k) {
+    const EquivalentTmdResponse& r = responses[k];
+    std::printf("  %11.3f%% %11.3f%% %16.4f %16.4f%s\n", 100.0 * r.zeta_tank, 100.0 * r.effective_damping,
+                r.displacement_rms_ratio, r.acceleration_rms_ratio, k + 1 == responses.size() ? "  (optimum)" : "");
+  }
+}
+
+}  // namespace
 
 Command add_modes_command(CLI::App& app) {
   struct Options {
     std::string case_path;
     std::vector<std::string> sets;
+    std::vector<double> tank_damping;
+    double tank_frequency_scale = 1.0;
     int count = 4;
     bool json = false;
   };
   auto o = std::make_shared<Options>();
-  CLI::App* sub = app.add_subcommand("modes", "Print the first linear sloshing modes of a case's tank");
+  CLI::App* sub = app.add_subcommand(
+      "modes", "Print the first linear sloshing modes of a case's tank (and, with [structure], its equivalent TMD)");
   sub->add_option("case", o->case_path, "Case file (TOML)")->required();
   sub->add_option("--count", o->count, "Number of modes (default 4)")->check(CLI::Range(1, 50));
-  sub->add_flag("--json", o->json, "Print {\"modes\": [{\"omega\": ..., \"frequency\": ...}, ...]} on stdout");
+  sub->add_option("--tank-damping", o->tank_damping,
+                  "With [structure]: also estimate the effective damping at these tank damping ratios (e.g. 0.0275)")
+      ->check(CLI::Range(1e-4, 1.0));
+  sub->add_option("--tank-frequency-scale", o->tank_frequency_scale,
+                  "With [structure]: multiply the TMD's frequency omega_1 by this (e.g. a measured free-decay "
+                  "frequency over the linear one; default 1)")
+      ->check(CLI::Range(0.5, 2.0));
+  sub->add_flag("--json", o->json,
+                "Print {\"modes\": [{\"omega\": ..., \"frequency\": ..., \"effective_mass_fraction\": ...}, ...], "
+                "\"equivalent_tmd\": {...}} on stdout");
   add_set_option(sub, o->sets);
   return {sub, [o]() {
             const CaseSpec spec = load_case(o->case_path, o->sets);
             const TankGeometry tank = make_tank(spec.tank, spec.where("tank.shape"));
             const auto modes = sloshing_modes(tank, spec.fill.depth, spec.fluid.gravity, o->count);
+            const bool coupled = spec.structure && spec.structure->tanks > 0;
+            if (!coupled && (!o->tank_damping.empty() || o->tank_frequency_scale != 1.0))
+              throw InputError(spec.source, "structure",
+                               "--tank-damping and --tank-frequency-scale need a case whose [structure] carries "
+                               "the tanks (tanks >= 1)");
+            std::optional<TankAsTmd> tmd;
+            std::vector<EquivalentTmdResponse> responses;
+            if (coupled) {
+              tmd = tank_as_tmd(spec);
+              tmd->tmd.convective_omega *= o->tank_frequency_scale;
+              responses = tmd_responses(*tmd, o->tank_damping);
+            }
             if (o->json) {
               nlohmann::json j;
               j["modes"] = nlohmann::json::array();
-              for (const auto& m : modes) j["modes"].push_back({{"omega", m.omega}, {"frequency", m.frequency}});
+              for (const auto& m : modes)
+                j["modes"].push_back({{"omega", m.omega},
+                                      {"frequency", m.frequency},
+                                      {"effective_mass_fraction", m.effective_mass_fraction}});
+              if (tmd) {
+                j["equivalent_tmd"] = tmd_json(*tmd, responses);
+                j["equivalent_tmd"]["frequency_scale"] = o->tank_frequency_scale;
+              }
               std::printf("%s\n", j.dump(2).c_str());
               return 0;
             }
             std::printf("%s: %s tank, depth %.6g m (linear potential theory, finite elements)\n", spec.source.c_str(),
                         spec.tank.shape.c_str(), spec.fill.depth);
-            std::printf("%6s %14s %14s %12s\n", "mode", "omega [rad/s]", "frequency [Hz]", "period [s]");
+            std::printf("%6s %14s %14s %12s %10s\n", "mode", "omega [rad/s]", "frequency [Hz]", "period [s]",
+                        "m_n / m_w");
             for (std::size_t k = 0; k < modes.size(); ++k)
-              std::printf("%6zu %14.6f %14.6f %12.6f\n", k + 1, modes[k].omega, modes[k].frequency,
-                          1.0 / modes[k].frequency);
+              std::printf("%6zu %14.6f %14.6f %12.6f %10.4f\n", k + 1, modes[k].omega, modes[k].frequency,
+                          1.0 / modes[k].frequency, modes[k].effective_mass_fraction);
             try {
               const double w = thesis_closed_form_omega(spec.tank, spec.fill.depth, spec.fluid.gravity);
               std::printf("thesis closed form (mode 1): %.6f rad/s (%+.2f%% from the modal value)\n", w,
                           100.0 * (w / modes[0].omega - 1.0));
             } catch (const InputError& e) {
               std::printf("thesis closed form (mode 1): not applicable (%s)\n", e.what());
+            }
+            if (tmd) {
+              print_tmd(*tmd, responses);
+              if (o->tank_frequency_scale != 1.0)
+                std::printf("  (omega_1 of the TMD is the modal value x %.6g, --tank-frequency-scale)\n",
+                            o->tank_frequency_scale);
             }
             return 0;
           }};

@@ -32,28 +32,50 @@ const std::array<QuadraturePoint, 7>& triangle_rule() {
   return rule;
 }
 
+// Gradients (rows d/dx, d/dy) of the six shape functions and the Jacobian determinant at a
+// quadrature point of a 6-node isoparametric triangle.
+struct ShapeGradients {
+  Eigen::Matrix<double, 2, 6> grad;
+  double det = 0.0;
+};
+ShapeGradients shape_gradients(const std::array<Vec2, 6>& x, const QuadraturePoint& q) {
+  // Derivatives of the shape functions with respect to (xi, eta) = (l2, l3), l1 = 1 - xi - eta.
+  const double l1 = q.l1, l2 = q.l2, l3 = q.l3;
+  Eigen::Matrix<double, 2, 6> dn;
+  dn << -(4 * l1 - 1), 4 * l2 - 1, 0.0, 4 * (l1 - l2), 4 * l3, -4 * l3,  //
+      -(4 * l1 - 1), 0.0, 4 * l3 - 1, -4 * l2, 4 * l2, 4 * (l1 - l3);
+  Eigen::Matrix2d jac = Eigen::Matrix2d::Zero();  // d(x, y) / d(xi, eta)
+  for (int i = 0; i < 6; ++i) {
+    jac(0, 0) += x[i].x * dn(0, i);
+    jac(0, 1) += x[i].x * dn(1, i);
+    jac(1, 0) += x[i].y * dn(0, i);
+    jac(1, 1) += x[i].y * dn(1, i);
+  }
+  const double det = jac.determinant();
+  if (!(det > 0.0)) throw std::runtime_error("sloshing_modes: inverted element in the fluid mesh");
+  return {jac.inverse().transpose() * dn, det};
+}
+
 // Stiffness matrix int grad N_i . grad N_j of a 6-node isoparametric triangle.
 Eigen::Matrix<double, 6, 6> element_stiffness(const std::array<Vec2, 6>& x) {
   Eigen::Matrix<double, 6, 6> k = Eigen::Matrix<double, 6, 6>::Zero();
   for (const QuadraturePoint& q : triangle_rule()) {
-    // Derivatives of the shape functions with respect to (xi, eta) = (l2, l3), l1 = 1 - xi - eta.
-    const double l1 = q.l1, l2 = q.l2, l3 = q.l3;
-    Eigen::Matrix<double, 2, 6> dn;
-    dn << -(4 * l1 - 1), 4 * l2 - 1, 0.0, 4 * (l1 - l2), 4 * l3, -4 * l3,  //
-        -(4 * l1 - 1), 0.0, 4 * l3 - 1, -4 * l2, 4 * l2, 4 * (l1 - l3);
-    Eigen::Matrix2d jac = Eigen::Matrix2d::Zero();  // d(x, y) / d(xi, eta)
-    for (int i = 0; i < 6; ++i) {
-      jac(0, 0) += x[i].x * dn(0, i);
-      jac(0, 1) += x[i].x * dn(1, i);
-      jac(1, 0) += x[i].y * dn(0, i);
-      jac(1, 1) += x[i].y * dn(1, i);
-    }
-    const double det = jac.determinant();
-    if (!(det > 0.0)) throw std::runtime_error("sloshing_modes: inverted element in the fluid mesh");
-    const Eigen::Matrix<double, 2, 6> grad = jac.inverse().transpose() * dn;
-    k.noalias() += (q.weight * det) * grad.transpose() * grad;
+    const ShapeGradients s = shape_gradients(x, q);
+    k.noalias() += (q.weight * s.det) * s.grad.transpose() * s.grad;
   }
   return k;
+}
+
+// int dN_i/dx dA and int 1 dA of a 6-node isoparametric triangle: the element's share of
+// int_fluid dphi/dx dA (the horizontal participation of a mode) and of the fluid area.
+Eigen::Matrix<double, 6, 1> element_x_derivative_integral(const std::array<Vec2, 6>& x, double& area) {
+  Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
+  for (const QuadraturePoint& q : triangle_rule()) {
+    const ShapeGradients s = shape_gradients(x, q);
+    g += (q.weight * s.det) * s.grad.row(0).transpose();
+    area += q.weight * s.det;
+  }
+  return g;
 }
 
 // Mass matrix of a straight quadratic surface edge, nodes (end, middle, end).
@@ -98,9 +120,14 @@ std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth,
 
   std::vector<Eigen::Triplet<double>> kii, kis;
   Eigen::MatrixXd kss = Eigen::MatrixXd::Zero(ns, ns);
+  // int dN/dx dA per unknown (surface, interior) and the fluid area.
+  Eigen::VectorXd gx_s = Eigen::VectorXd::Zero(ns), gx_i = Eigen::VectorXd::Zero(n - ns);
+  double area = 0.0;
   for (const auto& e : mesh.elements) {
     std::array<Vec2, 6> x;
     for (int i = 0; i < 6; ++i) x[i] = mesh.nodes[e[i]];
+    const Eigen::Matrix<double, 6, 1> ge = element_x_derivative_integral(x, area);
+    for (int i = 0; i < 6; ++i) (index[e[i]] < ns ? gx_s(index[e[i]]) : gx_i(index[e[i]] - ns)) += ge(i);
     const Eigen::Matrix<double, 6, 6> ke = element_stiffness(x);
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j) {
@@ -120,6 +147,9 @@ std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth,
   // Schur complement onto the surface: S = K_ss - K_si K_ii^-1 K_is. K_ii is positive
   // definite (the interior problem with phi = 0 on the surface).
   Eigen::MatrixXd schur = kss;
+  // The interior potential of a mode is phi_i = -K_ii^-1 K_is phi_s, so
+  // int dphi/dx dA = (gx_s - (K_ii^-1 K_is)^T gx_i) . phi_s = participation . phi_s.
+  Eigen::VectorXd participation = gx_s;
   if (ni > 0) {
     Eigen::SparseMatrix<double> a(ni, ni), b(ni, ns);
     a.setFromTriplets(kii.begin(), kii.end());
@@ -130,6 +160,7 @@ std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth,
     // product, not a dense one (also keeps Eigen's multithreaded GEMM out of this small job).
     const Eigen::MatrixXd x = solver.solve(Eigen::MatrixXd(b));
     schur -= Eigen::MatrixXd(b.transpose() * x);
+    participation -= x.transpose() * gx_i;
   }
   schur = 0.5 * (schur + schur.transpose());
 
@@ -152,9 +183,23 @@ std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth,
       mode.surface_x.push_back(x);
       mode.surface_eta.push_back(v * scale);
     }
+    // The eigenvectors are M_s-normalised (int_surface phi^2 dx = 1), so m_n / rho = Gamma^2 / lambda.
+    const double gamma = participation.dot(eig.eigenvectors().col(k));
+    mode.effective_mass_fraction = gamma * gamma / eig.eigenvalues()(k) / area;
     modes.push_back(std::move(mode));
   }
   return modes;
+}
+
+double still_water_area(const TankGeometry& tank, double depth) {
+  const std::vector<Vec2> section = still_water_polygon(tank, depth);
+  double twice_area = 0.0;  // shoelace formula
+  for (std::size_t i = 0; i < section.size(); ++i) {
+    const Vec2& a = section[i];
+    const Vec2& b = section[(i + 1) % section.size()];
+    twice_area += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * std::abs(twice_area);
 }
 
 double first_sloshing_omega(const TankGeometry& tank, double depth, double gravity, const ModalOptions& options) {

@@ -24,6 +24,13 @@ struct SloshingMode {
   // Mode shape of the free surface: x of the surface nodes (left to right) and the
   // elevation there, scaled to max |eta| = 1, positive at the left wall.
   std::vector<double> surface_x, surface_eta;
+  // Share of the liquid that sloshes in this mode under a horizontal motion of the tank: the
+  // effective (convective) mass of the mode's mechanical analogue divided by the liquid mass,
+  //   m_n / m_w = (int_fluid dphi/dx dA)^2 / (lambda int_surface phi^2 dx) / A_fluid,
+  // lambda = omega^2 / g (e.g. Ibrahim 2005, ch. 7; Faltinsen & Timokha 2009, ch. 7). For a
+  // rectangle it is 8 tanh(n pi h / L) / (n^3 pi^3 h / L) for odd n and 0 for even n
+  // (Graham & Rodriguez 1952); summed over all modes it is 1 minus the impulsive share.
+  double effective_mass_fraction = 0.0;
 };
 
 struct ModalOptions {
@@ -43,6 +50,10 @@ struct ModalOptions {
 // is not a single pool below the top of the walls (see still_water_polygon).
 std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth, double gravity, int count,
                                          const ModalOptions& options = {});
+
+// Area (m^2) of the still-water section of `tank` filled to `depth`: the liquid mass per metre of
+// width divided by the density.
+double still_water_area(const TankGeometry& tank, double depth);
 
 // omega_1 (rad/s), the lowest sloshing frequency.
 double first_sloshing_omega(const TankGeometry& tank, double depth, double gravity, const ModalOptions& options = {});

@@ -111,6 +111,42 @@ TEST(SloshingModes, RectangleModeShapeIsACosine) {
     EXPECT_NEAR(m.surface_eta[k], std::cos(kPi * m.surface_x[k]), 1e-3) << "x = " << m.surface_x[k];
 }
 
+TEST(SloshingModes, RectangleEffectiveMassesMatchGrahamAndRodriguez) {
+  // Reference: the convective mass of mode n of a rectangular tank, as a share of the liquid,
+  // 8 tanh(n pi h / L) / (n^3 pi^3 h / L) for odd n and 0 for even n (Graham & Rodriguez 1952;
+  // e.g. Ibrahim, Liquid Sloshing Dynamics, 2005, eq. 7.5). Tolerance: 0.2% relative on the odd
+  // modes, 1e-6 absolute on the even ones (zero by symmetry).
+  const TankGeometry t = tank("rectangle", 1.0, 0.6);
+  for (double h : {0.1, 0.25, 0.5}) {
+    EXPECT_NEAR(still_water_area(t, h), h, 1e-12);
+    const std::vector<SloshingMode> modes = sloshing_modes(t, h, kG, 3);
+    ASSERT_EQ(modes.size(), 3u);
+    for (int n : {1, 3}) {
+      const double exact = 8.0 * std::tanh(n * kPi * h) / (n * n * n * kPi * kPi * kPi * h);
+      std::printf("  rectangle h/L = %.2f  m_%d / m_w = %.6f, exact %.6f\n", h, n,
+                  modes[n - 1].effective_mass_fraction, exact);
+      char quantity[80];
+      std::snprintf(quantity, sizeof quantity, "m_%d / m_w, rectangle L = 1 m, h = %.2f m", n, h);
+      testing::check_relative(quantity,
+                              modes[n - 1].effective_mass_fraction, exact, 0.002,
+                              "Graham & Rodriguez (1952), 8 tanh(n pi h/L) / (n^3 pi^3 h/L)", "");
+    }
+    EXPECT_NEAR(modes[1].effective_mass_fraction, 0.0, 1e-6);
+  }
+}
+
+TEST(SloshingModes, RightAngledVFirstModeSloshesTwoThirdsOfTheLiquid) {
+  // Lamb's mode phi = x y in the 45-degree V (origin at the vertex, surface at y = h):
+  // int dphi/dx dA = int y dA = 2 h^3 / 3, int_surface phi^2 dx = 2 h^5 / 3, lambda = 1 / h, so
+  // m_1 / rho = (2 h^3 / 3)^2 / (2 h^4 / 3) = 2 h^2 / 3 and m_1 / m_w = 2/3 (exact). Tolerance 0.2%.
+  const double h = 0.1;
+  const TankGeometry v = tank("sloped", 1.0, 0.5);
+  EXPECT_NEAR(still_water_area(v, h), h * h, 1e-12);
+  const SloshingMode m = sloshing_modes(v, h, kG, 1).front();
+  testing::check_relative("m_1 / m_w, V 45 deg, h = 0.1 m", m.effective_mass_fraction, 2.0 / 3.0, 0.002,
+                          "exact, from Lamb's mode phi = x y", "");
+}
+
 TEST(SloshingModes, RightAngledVMatchesLambAndKirchhoff) {
   // V with walls at 45 degrees, vertex at depth h below the surface. Exact solutions
   // (Lamb, Hydrodynamics, 6th ed., sec. 258): mode 1 (antisymmetric) phi = x y,
