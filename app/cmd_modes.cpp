@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
-#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -26,31 +25,6 @@ std::vector<EquivalentTmdResponse> tmd_responses(const TankAsTmd& t, std::vector
   for (double z : zetas) out.push_back(equivalent_tmd_response(t.tmd, z, t.band_low, t.band_high));
   out.push_back(optimal_equivalent_tmd(t.tmd, t.band_low, t.band_high));
   return out;
-}
-
-nlohmann::json tmd_json(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses) {
-  const SdofSpec& s = t.tmd.structure;
-  nlohmann::json j = {{"liquid_mass_kg", t.liquid_mass},
-                      {"convective_mass_fraction", t.convective_fraction},
-                      {"convective_mass_kg", t.tmd.convective_mass},
-                      {"rigid_mass_kg", t.tmd.rigid_mass},
-                      {"mass_ratio", t.tmd.convective_mass / s.mass},
-                      {"structure_frequency_Hz", s.natural_frequency()},
-                      {"structure_damping_ratio", s.damping_ratio()},
-                      {"convective_frequency_Hz", t.tmd.convective_omega / (2.0 * std::numbers::pi)},
-                      {"tuning_ratio", t.tmd.convective_omega / s.angular_frequency()},
-                      {"band_Hz", {t.band_low, t.band_high}},
-                      {"band_from_load", t.band_from_load}};
-  auto row = [](const EquivalentTmdResponse& r) {
-    return nlohmann::json{{"tank_damping_ratio", r.zeta_tank},
-                          {"effective_damping_ratio", r.effective_damping},
-                          {"displacement_rms_ratio", r.displacement_rms_ratio},
-                          {"acceleration_rms_ratio", r.acceleration_rms_ratio}};
-  };
-  j["responses"] = nlohmann::json::array();
-  for (std::size_t k = 0; k + 1 < responses.size(); ++k) j["responses"].push_back(row(responses[k]));
-  j["optimum"] = row(responses.back());
-  return j;
 }
 
 void print_tmd(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses) {
@@ -123,7 +97,8 @@ Command add_modes_command(CLI::App& app) {
                                       {"frequency", m.frequency},
                                       {"effective_mass_fraction", m.effective_mass_fraction}});
               if (tmd) {
-                j["equivalent_tmd"] = tmd_json(*tmd, responses);
+                j["equivalent_tmd"] = equivalent_tmd_json(
+                    *tmd, std::vector<EquivalentTmdResponse>(responses.begin(), responses.end() - 1), responses.back());
                 j["equivalent_tmd"]["frequency_scale"] = o->tank_frequency_scale;
               }
               std::printf("%s\n", j.dump(2).c_str());

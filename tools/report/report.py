@@ -796,7 +796,27 @@ def admittance_part(rep, info):
     return (rl.figure_html(png, "Mechanical admittance |H(f)|² = S(f)·K²/S0(f) of the structure's displacement "
                                 "(and of the wave height). File plots/admittance.png (and .svg).", "admittance")
             + rl.table(["", "with the tank(s)", "structure alone, same load", "ratio"],
-                       [[esc(c) if k == 0 else c for k, c in enumerate(row)] for row in rows]))
+                       [[esc(c) if k == 0 else c for k, c in enumerate(row)] for row in rows])
+            + linear_estimate_html(block.get("equivalent_tmd"), zeta))
+
+
+def linear_estimate_html(tmd, zeta):
+    """summary.json structure.equivalent_tmd: the tank's first mode as a linear TMD, and the tank
+    damping such a TMD needs to give this run's ζ_eff."""
+    if not isinstance(tmd, dict) or "optimum" not in tmd:
+        return ""
+    best = tmd["optimum"]
+    z = tmd.get("tank_damping_for_measured_effective_damping")
+    meaning = (f"this run's ζ_eff = {fmt(100 * zeta)} % is what such a tank gives at a damping ratio ζ_t = "
+               f"{fmt(100 * z)} %" if z is not None else
+               f"no damping of such a tank gives this run's ζ_eff = {fmt(100 * zeta)} %")
+    return (f"<p>Linear estimate (summary.json <code>structure.equivalent_tmd</code>; "
+            f"<code>sloshsph modes CASE --tank-damping Z</code>): mode 1 sloshes "
+            f"{fmt(100 * tmd['convective_mass_fraction'])} % of the liquid, "
+            f"m<sub>1</sub>/M<sub>s</sub> = {fmt(100 * tmd['mass_ratio'])} %, tuned to "
+            f"f<sub>1</sub>/f<sub>s</sub> = {fmt(tmd['tuning_ratio'])}. The best linear tank of this mass and "
+            f"tuning (ζ_t = {fmt(100 * best['tank_damping_ratio'])} %) gives ζ_eff = "
+            f"{fmt(100 * best['effective_damping_ratio'])} %; {meaning}.</p>")
 
 
 def structure_psd(rep, names, info):

@@ -154,6 +154,9 @@ def make_run(run_dir, status="completed"):
         "displacement": {"peak_m": 0.1, "rms_m": 0.03},
         "structure_without_tank": {"effective_damping_ratio": 0.0101,
                                    "acceleration": {"peak_milli_g": 10.0, "rms_milli_g": 2.8}},
+        "equivalent_tmd": {"convective_mass_fraction": 0.757, "mass_ratio": 0.00615, "tuning_ratio": 0.981,
+                           "optimum": {"tank_damping_ratio": 0.0405, "effective_damping_ratio": 0.0273},
+                           "tank_damping_for_measured_effective_damping": 0.0134},
     }
     if status != "completed":
         summary["failure"] = "synthetic failure for the test"
@@ -317,6 +320,8 @@ def test_run_report(tmp):
     near(adm.get("peak_H2_displacement", 0.0), 1.0 / (2 * 0.02) ** 2, 0.01, "admittance peak 1/(2 zeta)^2 at f_n")
     check("structure alone, same load" in text and "<td>1.01</td>" in text and "<td>0.75</td>" in text,
           "the with/without table in the page (zeta 1.01 % alone, peak ratio 0.75)")
+    check("at a damping ratio ζ_t = 1.34 %" in text and "ζ_eff = 2.73 %" in text,
+          "the linear equivalent-TMD estimate in the page (tank damping 1.34 %, optimum 2.73 %)")
     check_in_browser(html_path, tmp)
 
     print("report.py --out, on a failed run with a cut-short CSV and a truncated snapshot")

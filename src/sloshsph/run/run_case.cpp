@@ -26,6 +26,7 @@
 #include "sloshsph/run/response.hpp"
 #include "sloshsph/run/screen_summary.hpp"
 #include "sloshsph/run/structure_summary.hpp"
+#include "sloshsph/run/tank_as_tmd.hpp"
 #include "sloshsph/run/simulation.hpp"
 
 namespace sloshsph {
@@ -430,6 +431,12 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     if (spec.structure->ground_from_excitation)  // the same ground motion for the structure without tanks
       for (const double t : ss.time) ss.ground_acceleration.push_back(sim.base().at(t).acceleration.x);
     s["structure"] = structure_summary(ss, *spec.structure);
+    if (spec.structure->tanks >= 1 && spec.structure->load.type == StructureLoadType::noise) {
+      const nlohmann::json& admittance = s["structure"].value("admittance", nlohmann::json::object());
+      std::optional<double> measured;
+      if (admittance.contains("effective_damping_ratio")) measured = admittance["effective_damping_ratio"].get<double>();
+      s["structure"]["equivalent_tmd"] = equivalent_tmd_summary(spec, measured);
+    }
     if (auto a = structure_admittance(ss, *spec.structure))
       write_file_atomic((fs::path(dir) / "admittance.csv").string(), admittance_csv(*a));
   }

@@ -1,5 +1,8 @@
 #include "sloshsph/run/tank_as_tmd.hpp"
 
+#include <exception>
+#include <numbers>
+
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/linear/modal.hpp"
@@ -29,6 +32,47 @@ TankAsTmd tank_as_tmd(const CaseSpec& spec) {
   t.band_low = t.band_from_load ? s.load.band_low : 0.01 * fn;
   t.band_high = t.band_from_load ? s.load.band_high : 10.0 * fn;
   return t;
+}
+
+nlohmann::json equivalent_tmd_json(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses,
+                                   const EquivalentTmdResponse& optimum) {
+  const SdofSpec& s = t.tmd.structure;
+  nlohmann::json j = {{"liquid_mass_kg", t.liquid_mass},
+                      {"convective_mass_fraction", t.convective_fraction},
+                      {"convective_mass_kg", t.tmd.convective_mass},
+                      {"rigid_mass_kg", t.tmd.rigid_mass},
+                      {"mass_ratio", t.tmd.convective_mass / s.mass},
+                      {"convective_frequency_Hz", t.tmd.convective_omega / (2.0 * std::numbers::pi)},
+                      {"structure_frequency_Hz", s.natural_frequency()},
+                      {"structure_damping_ratio", s.damping_ratio()},
+                      {"tuning_ratio", t.tmd.convective_omega / s.angular_frequency()},
+                      {"band_Hz", {t.band_low, t.band_high}},
+                      {"band_from_load", t.band_from_load}};
+  auto row = [](const EquivalentTmdResponse& r) {
+    return nlohmann::json{{"tank_damping_ratio", r.zeta_tank},
+                          {"effective_damping_ratio", r.effective_damping},
+                          {"displacement_rms_ratio", r.displacement_rms_ratio},
+                          {"acceleration_rms_ratio", r.acceleration_rms_ratio}};
+  };
+  j["responses"] = nlohmann::json::array();
+  for (const EquivalentTmdResponse& r : responses) j["responses"].push_back(row(r));
+  j["optimum"] = row(optimum);
+  return j;
+}
+
+nlohmann::json equivalent_tmd_summary(const CaseSpec& spec, std::optional<double> measured_effective_damping) {
+  try {
+    const TankAsTmd t = tank_as_tmd(spec);
+    nlohmann::json j = equivalent_tmd_json(t, {}, optimal_equivalent_tmd(t.tmd, t.band_low, t.band_high));
+    j["method"] = "linear: mode 1 as a mass on a spring (structure/equivalent_tmd.hpp); screens and floors ignored";
+    j["tank_damping_for_measured_effective_damping"] = nullptr;
+    if (measured_effective_damping)
+      if (const auto z = tank_damping_for_effective_damping(t.tmd, *measured_effective_damping, t.band_low, t.band_high))
+        j["tank_damping_for_measured_effective_damping"] = *z;
+    return j;
+  } catch (const std::exception& e) {
+    return {{"note", std::string("no linear estimate: ") + e.what()}};
+  }
 }
 
 }  // namespace sloshsph

@@ -40,9 +40,12 @@ double equivalent_tmd_admittance(const EquivalentTmd& tmd, double zeta_tank, dou
 EquivalentTmdResponse equivalent_tmd_response(const EquivalentTmd& tmd, double zeta_tank, double f_lo, double f_hi) {
   if (!(f_hi > f_lo && f_lo >= 0.0)) throw std::invalid_argument("equivalent_tmd_response: bad band");
   const double f_n = tmd.structure.natural_frequency();
-  // Simpson on an even number of intervals no wider than 1e-5 f_n (peaks of half-width zeta f_n
-  // with zeta >= 1e-4 get at least 10 points).
-  const auto intervals = 2 * static_cast<long>(std::ceil((f_hi - f_lo) / (2e-5 * f_n)));
+  // Simpson on an even number of intervals, 50 per half-width zeta f_n of the sharpest peak the
+  // system can have (its modes are damped at least about as much as the less damped of the two).
+  const double zeta_structure = tmd.structure.damping_ratio();
+  const double zeta_min = std::max(1e-5, zeta_structure > 0.0 ? std::min(zeta_structure, zeta_tank) : zeta_tank);
+  const double width = zeta_min * f_n / 50.0;
+  const auto intervals = 2 * static_cast<long>(std::ceil(std::min((f_hi - f_lo) / width, 4e6) / 2.0));
   const double df = (f_hi - f_lo) / intervals;
   double displacement = 0.0, bare_displacement = 0.0, acceleration = 0.0, bare_acceleration = 0.0;
   for (long i = 0; i <= intervals; ++i) {
@@ -81,6 +84,19 @@ EquivalentTmdResponse optimal_equivalent_tmd(const EquivalentTmd& tmd, double f_
     }
   }
   return equivalent_tmd_response(tmd, std::exp(0.5 * (a + b)), f_lo, f_hi);
+}
+
+std::optional<double> tank_damping_for_effective_damping(const EquivalentTmd& tmd, double zeta_eff, double f_lo,
+                                                         double f_hi) {
+  const EquivalentTmdResponse best = optimal_equivalent_tmd(tmd, f_lo, f_hi);
+  auto damping = [&](double u) { return equivalent_tmd_response(tmd, std::exp(u), f_lo, f_hi).effective_damping; };
+  double lo = std::log(1e-4), hi = std::log(best.zeta_tank);
+  if (!(zeta_eff >= damping(lo) && zeta_eff <= best.effective_damping)) return std::nullopt;
+  while (hi - lo > 1e-3) {
+    const double mid = 0.5 * (lo + hi);
+    (damping(mid) < zeta_eff ? lo : hi) = mid;
+  }
+  return std::exp(0.5 * (lo + hi));
 }
 
 }  // namespace sloshsph

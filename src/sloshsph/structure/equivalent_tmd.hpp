@@ -15,6 +15,8 @@
 //   m_1 y'' + c_1 (y' - x') + k_1 (y - x) = 0,   k_1 = m_1 omega_1^2,  c_1 = 2 zeta_t m_1 omega_1.
 // Linear: it knows neither the amplitude dependence of the sloshing frequency and damping nor
 // the higher modes, which is why the simulations exist.
+#include <optional>
+
 #include "sloshsph/structure/sdof.hpp"
 
 namespace sloshsph {
@@ -41,12 +43,19 @@ struct EquivalentTmdResponse {
   double acceleration_rms_ratio = 0.0;
 };
 
-// The response over the force band [f_lo, f_hi] (Hz; composite Simpson on a grid fine enough to
-// resolve peaks of half-width 1e-4 f_n).
+// The response over the force band [f_lo, f_hi] (Hz; composite Simpson, 50 points per half-width
+// of the sharpest peak, ζ f_n with ζ the smaller of the two damping ratios, at most 4e6 points).
 EquivalentTmdResponse equivalent_tmd_response(const EquivalentTmd& tmd, double zeta_tank, double f_lo, double f_hi);
 
 // The tank damping ratio in [1e-4, 1] that maximises the effective damping over the band, and
 // the response there (golden-section search on log zeta_tank).
 EquivalentTmdResponse optimal_equivalent_tmd(const EquivalentTmd& tmd, double f_lo, double f_hi);
+
+// The tank damping ratio at or below the optimum's whose effective damping is `zeta_eff`: what a
+// measured zeta_eff (a simulation's, a test's) means as the damping of a linear TMD of the same
+// mass and tuning. Empty when zeta_eff is outside [zeta_eff(1e-4), zeta_eff(optimum)] (no linear
+// tank gives it). Bisection on log zeta_tank to 0.1%, on the branch where zeta_eff increases.
+std::optional<double> tank_damping_for_effective_damping(const EquivalentTmd& tmd, double zeta_eff, double f_lo,
+                                                         double f_hi);
 
 }  // namespace sloshsph

@@ -83,5 +83,24 @@ TEST(EquivalentTmd, OptimumMatchesWarburton) {
   }
 }
 
+TEST(EquivalentTmd, TankDampingForAnEffectiveDampingInvertsTheResponse) {
+  // Round trip on the lower branch (tolerance: the bisection's 0.1% in zeta_t), and no answer
+  // beyond the optimum or below the structure's own damping.
+  EquivalentTmd tmd;
+  tmd.structure = {7.0e7, 1.18e6, 4.96e7};
+  tmd.convective_mass = 4.30e5;
+  tmd.rigid_mass = 2.95e5;
+  tmd.convective_omega = 2.0 * kPi * 0.1315;
+  for (double zeta_t : {0.002, 0.0134, 0.03}) {
+    const double zeta_eff = equivalent_tmd_response(tmd, zeta_t, 0.05, 0.5).effective_damping;
+    const std::optional<double> back = tank_damping_for_effective_damping(tmd, zeta_eff, 0.05, 0.5);
+    ASSERT_TRUE(back.has_value()) << zeta_t;
+    EXPECT_NEAR(*back / zeta_t, 1.0, 2e-3);
+  }
+  const EquivalentTmdResponse best = optimal_equivalent_tmd(tmd, 0.05, 0.5);
+  EXPECT_FALSE(tank_damping_for_effective_damping(tmd, 1.01 * best.effective_damping, 0.05, 0.5).has_value());
+  EXPECT_FALSE(tank_damping_for_effective_damping(tmd, 0.0094, 0.05, 0.5).has_value());
+}
+
 }  // namespace
 }  // namespace sloshsph
