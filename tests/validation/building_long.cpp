@@ -43,6 +43,7 @@
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/run/run_case.hpp"
 #include "sloshsph/run/structure_summary.hpp"
+#include "sloshsph/run/tank_as_tmd.hpp"
 #include "validation_check.hpp"
 
 namespace sloshsph {
@@ -164,6 +165,11 @@ std::optional<Measured> run_building(const std::string& tank, int level) {
          s.at("acceleration").at("peak_ratio_to_without_tank").get<double>());
   report(key + "rms_acceleration_ratio_to_without_tank", s.at("acceleration").at("rms_ratio_to_without_tank").get<double>());
   report(key + "wall_seconds", summary.value("wall_time_s", NAN));
+  // What the measured zeta_eff means as the damping of a linear TMD of this tank's mass and tuning
+  // (run/tank_as_tmd.hpp; NaN where no linear tank gives it).
+  const nlohmann::json tmd = equivalent_tmd_summary(spec, m.zeta_percent / 100.0);
+  const nlohmann::json z = tmd.value("tank_damping_for_measured_effective_damping", nlohmann::json());
+  report(key + "linear_tmd_tank_damping_percent", z.is_number() ? 100.0 * z.get<double>() : NAN);
   record_admittance_curve(dir, tank, level, s.at("admittance"));
   return m;
 }
