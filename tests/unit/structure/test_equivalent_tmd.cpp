@@ -23,6 +23,17 @@ double white_noise_integral_4(const double a[5], const double b[4]) {
   return kPi * num / den;
 }
 
+// The thesis's building (M_s = 70,000 t, C_s = 1.18e6 N s/m, K_s = 4.96e7 N/m) with a tank's first
+// mode of mass m_1 (kg) at f_1 (Hz), and `rigid` kg riding with the structure.
+EquivalentTmd thesis_building_with(double m1, double f1, double rigid) {
+  EquivalentTmd tmd;
+  tmd.structure = {7.0e7, 1.18e6, 4.96e7};
+  tmd.convective_mass = m1;
+  tmd.rigid_mass = rigid;
+  tmd.convective_omega = 2.0 * kPi * f1;
+  return tmd;
+}
+
 TEST(EquivalentTmd, WithoutTankItIsTheStructureAlone) {
   // Reference: int_0^inf |H|^2 df = pi f_n / (4 zeta) for a linear SDOF (Crandall & Mark 1963), so
   // the area method returns the structure's own zeta. Tolerance 1e-4 (the band 1e-3-100 f_n
@@ -42,11 +53,7 @@ TEST(EquivalentTmd, AreaMatchesTheTwoDegreeOfFreedomWhiteNoiseIntegral) {
   // Reference: X/F = D_1 / (D_s D_1 + m_1 s^2 (c_1 s + k_1)), D_1 = m_1 s^2 + c_1 s + k_1,
   // D_s = (M + m_r) s^2 + C s + K, integrated in closed form (I_4 above); zeta_eff = pi f_n /
   // (4 K^2 int_0^inf |X/F|^2 df) with int_0^inf df = I_4 / (4 pi). Tolerance 1e-4 (quadrature, band).
-  EquivalentTmd tmd;
-  tmd.structure = {7.0e7, 1.18e6, 4.96e7};
-  tmd.convective_mass = 5.27e5;
-  tmd.rigid_mass = 1.98e5;
-  tmd.convective_omega = 2.0 * kPi * 0.1456;
+  const EquivalentTmd tmd = thesis_building_with(5.27e5, 0.1456, 1.98e5);
   const double zeta_t = 0.03;
   const double m = tmd.structure.mass + tmd.rigid_mass, c = tmd.structure.damping, k = tmd.structure.stiffness;
   const double m1 = tmd.convective_mass, k1 = m1 * std::pow(tmd.convective_omega, 2);
@@ -86,11 +93,7 @@ TEST(EquivalentTmd, OptimumMatchesWarburton) {
 TEST(EquivalentTmd, TankDampingForAnEffectiveDampingInvertsTheResponse) {
   // Round trip on the lower branch (tolerance: the bisection's 0.1% in zeta_t), and no answer
   // beyond the optimum or below the structure's own damping.
-  EquivalentTmd tmd;
-  tmd.structure = {7.0e7, 1.18e6, 4.96e7};
-  tmd.convective_mass = 4.30e5;
-  tmd.rigid_mass = 2.95e5;
-  tmd.convective_omega = 2.0 * kPi * 0.1315;
+  const EquivalentTmd tmd = thesis_building_with(4.30e5, 0.1315, 2.95e5);  // like the SF tank
   for (double zeta_t : {0.002, 0.0134, 0.03}) {
     const double zeta_eff = equivalent_tmd_response(tmd, zeta_t, 0.05, 0.5).effective_damping;
     const std::optional<double> back = tank_damping_for_effective_damping(tmd, zeta_eff, 0.05, 0.5);
