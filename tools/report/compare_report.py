@@ -49,6 +49,10 @@ def read_status(path):
     return {os.path.basename(str(e.get("dir", "")).rstrip(os.sep)): e for e in entries if isinstance(e, dict)}
 
 
+def percent(ratio):
+    return 100 * ratio if ratio is not None else None
+
+
 def run_row(run_dir, notes, status=None):
     summary = rl.read_json(os.path.join(run_dir, "summary.json"), notes)
     case = rl.parse_toml(rl.read_text(os.path.join(run_dir, "case.toml")), notes)
@@ -65,8 +69,8 @@ def run_row(run_dir, notes, status=None):
         "leaked_particles": get(summary, "leaked_particles"),
         "wall_seconds_per_simulated_second": get(summary, "wall_seconds_per_simulated_second"),
         "structure": bool(s),
-        "zeta_eff_percent": 100 * zeta if zeta is not None else None,
-        "zeta_eff_without_tank_percent": 100 * zeta_alone if zeta_alone is not None else None,
+        "zeta_eff_percent": percent(zeta),
+        "zeta_eff_without_tank_percent": percent(zeta_alone),
         "peak_acceleration_milli_g": get(s, "acceleration", "peak_milli_g"),
         "peak_acceleration_without_tank_milli_g": get(alone, "acceleration", "peak_milli_g"),
         "peak_acceleration_ratio": get(s, "acceleration", "peak_ratio_to_without_tank"),
@@ -76,6 +80,9 @@ def run_row(run_dir, notes, status=None):
         "peak_displacement_ratio": get(s, "displacement", "peak_ratio_to_without_tank"),
         "natural_frequency_Hz": get(s, "admittance", "natural_frequency_Hz"),
         "band_Hz": s.get("admittance", {}).get("band_Hz") if isinstance(s.get("admittance"), dict) else None,
+        # The tank damping of the linear equivalent TMD that gives this zeta_eff (summary.json, since e9a4192).
+        "linear_tmd_tank_damping_percent": percent(get(s, "equivalent_tmd",
+                                                       "tank_damping_for_measured_effective_damping")),
     }
     if status:
         # What `sloshsph status` read (the lock's holder, rows past the last summary): the run's
@@ -92,7 +99,7 @@ def runs_table(rows, out_dir, folder):
     header = ["run", "status", "time (s)", "leaked", "wall s / sim s"]
     structure = any(r["structure"] for r in rows)
     if structure:
-        header += ["ζ_eff (%)", "ζ_eff alone (%)", "peak a_s (milli-g)", "peak ratio", "RMS a_s (milli-g)",
+        header += ["ζ_eff (%)", "ζ_eff alone (%)", "linear TMD ζ_t (%)", "peak a_s (milli-g)", "peak ratio", "RMS a_s (milli-g)",
                    "RMS ratio", "peak x_s (m)", "peak x_s ratio"]
     cells = []
     for r in rows:
@@ -107,7 +114,7 @@ def runs_table(rows, out_dir, folder):
                fmt(r["wall_seconds_per_simulated_second"], 3)]
         if structure:
             row += [fmt(r[k]) for k in ("zeta_eff_percent", "zeta_eff_without_tank_percent",
-                                        "peak_acceleration_milli_g", "peak_acceleration_ratio",
+                                        "linear_tmd_tank_damping_percent", "peak_acceleration_milli_g", "peak_acceleration_ratio",
                                         "rms_acceleration_milli_g", "rms_acceleration_ratio", "peak_displacement_m",
                                         "peak_displacement_ratio")]
         cells.append(row)

@@ -438,6 +438,7 @@ def test_compare_report(tmp):
     check(sorted(rows) == ["tank_a", "tank_b"], "one row per run directory")
     near(rows["tank_a"]["zeta_eff_percent"], 2.0, 1e-9, "zeta_eff of tank_a from its summary.json, in %")
     near(rows["tank_a"]["peak_acceleration_ratio"], 0.75, 1e-9, "peak ratio of tank_a")
+    near(rows["tank_a"]["linear_tmd_tank_damping_percent"], 1.34, 1e-9, "linear TMD tank damping of tank_a, in %")
     check(rows["tank_a"]["status"] == "completed", "tank_a: its summary's status")
     check(rows["tank_b"]["status"] == "running" and rows["tank_b"]["simulated_time_s"] == 31.5
           and rows["tank_b"]["leaked_particles"] == 2, "tank_b: the state, time and leaks that --status gives")
