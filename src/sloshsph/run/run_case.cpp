@@ -26,8 +26,8 @@
 #include "sloshsph/run/response.hpp"
 #include "sloshsph/run/screen_summary.hpp"
 #include "sloshsph/run/structure_summary.hpp"
-#include "sloshsph/run/tank_as_tmd.hpp"
 #include "sloshsph/run/simulation.hpp"
+#include "sloshsph/run/tank_as_tmd.hpp"
 
 namespace sloshsph {
 namespace fs = std::filesystem;
