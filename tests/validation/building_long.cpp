@@ -173,17 +173,27 @@ CaseSpec building_case(const std::string& stem) {
   return resolve_case(read_case_file(testing::case_path(stem + ".toml"), {}));
 }
 
+// Makes, resumes or finds the completed run of `spec` (the case of `tank`) in `dir` and checks that
+// no particle left the tank; returns its summary.json, or nothing when the run failed.
+std::optional<nlohmann::json> completed_run_without_leaks(const CaseSpec& spec, const std::string& tank,
+                                                          const fs::path& dir) {
+  if (!complete_run(spec, dir)) return std::nullopt;
+  nlohmann::json summary = read_json(dir / "summary.json");
+  check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(), 0.0,
+                "none may leave");
+  return summary;
+}
+
 void record_admittance_curve(const fs::path& dir, const std::string& tank, int level, const nlohmann::json& admittance);
 
 std::optional<Measured> run_building(const std::string& tank, int level) {
   const std::string stem = building_stem(tank, level);
   const CaseSpec spec = building_case(stem);
   const fs::path dir = long_run_dir(stem);
-  if (!complete_run(spec, dir)) return std::nullopt;
-  const nlohmann::json summary = read_json(dir / "summary.json");
+  const std::optional<nlohmann::json> completed = completed_run_without_leaks(spec, tank, dir);
+  if (!completed) return std::nullopt;
+  const nlohmann::json& summary = *completed;
   const nlohmann::json meta = read_json(dir / "run.json");
-  check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(), 0.0,
-                "none may leave");
   std::printf("  %s: git revision %s, %zu resumes, %.0f s of wall time\n", dir.c_str(),
               meta.value("git_revision", "?").c_str(), meta.contains("resumed") ? meta["resumed"].size() : 0,
               summary.value("wall_time_s", NAN));
@@ -302,11 +312,7 @@ TEST(ValidationLong, BuildingTanksAgainstTables43And44At44MilliG) {
 // others wait for it (complete_run).
 void make_building_run(const std::string& tank, int level) {
   const std::string stem = building_stem(tank, level);
-  const fs::path dir = long_run_dir(stem);
-  if (!complete_run(building_case(stem), dir)) return;
-  const nlohmann::json summary = read_json(dir / "summary.json");
-  check_at_most("particles leaked from the tank in one hour, " + stem, summary.at("leaked_particles").get<double>(),
-                0.0, "none may leave");
+  completed_run_without_leaks(building_case(stem), tank, long_run_dir(stem));
 }
 
 TEST(ValidationLong, BuildingRunFR10MilliG) { make_building_run("fr", 10); }
