@@ -94,8 +94,9 @@ BENCHMARK(WcsphStepTait)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The stages of the ISPH step one at a time (IsphScheme::run_stage) on the Tait tank with screens
 // after 20 steps of its excitation: a scheme of its own is started on a copy of the particles and
-// takes two steps, and each timed stage then runs on a fresh copy of them (the copy is not timed)
-// with the solver data of the last step. The pressure solve starts from the pressures before that
+// takes two steps, and each timed stage then runs on a fresh copy of them (the copy and the build
+// of the pairs the stage reads are not timed; StagePairs times that build alone, at r*) with the
+// solver data of the last step. The pressure solve starts from the pressures before that
 // step, as the step did, so its Krylov iterations are the step's.
 struct StageBench {
   CaseSpec spec;
@@ -125,6 +126,7 @@ void time_stage(benchmark::State& state, IsphStage stage, const std::string& pre
   for (auto _ : state) {
     state.PauseTiming();
     Particles p = start;
+    b.scheme.prepare_stage(stage, p);
     state.ResumeTiming();
     b.scheme.run_stage(stage, p, b.input);
   }
@@ -134,12 +136,20 @@ void time_stage(benchmark::State& state, IsphStage stage, const std::string& pre
     state.counters["krylov_iterations"] = b.scheme.diagnostics().solver_iterations;
 }
 
+// The pair layer's build (sph/pairs.hpp) at r*, as the step does it before the density stage.
+void StagePairs(benchmark::State& state) {
+  StageBench b = stage_bench(state.range(0) / 1000.0, "multigrid");
+  for (auto _ : state) b.scheme.prepare_stage(IsphStage::density_and_ppe_source, b.particles);
+  state.counters["particle_steps/s"] = benchmark::Counter(
+      static_cast<double>(b.particles.size()) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
 void StageSpsStress(benchmark::State& s) { time_stage(s, IsphStage::sps_stress); }
 void StagePredict(benchmark::State& s) { time_stage(s, IsphStage::predict); }
 void StageDensityAndPpeSource(benchmark::State& s) { time_stage(s, IsphStage::density_and_ppe_source); }
 void StagePressureSolve(benchmark::State& s) { time_stage(s, IsphStage::pressure_solve); }
 void StagePressureSolveJacobi(benchmark::State& s) { time_stage(s, IsphStage::pressure_solve, "jacobi"); }
 void StageCorrectAndAdvance(benchmark::State& s) { time_stage(s, IsphStage::correct_and_advance); }
+BENCHMARK(StagePairs)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(StageSpsStress)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(StagePredict)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(StageDensityAndPpeSource)->Arg(7)->Arg(5)->Unit(benchmark::kMicrosecond)->UseRealTime();

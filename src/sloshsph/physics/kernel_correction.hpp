@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "sloshsph/core/vec2.hpp"
-#include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
@@ -72,22 +72,18 @@ struct RenormalisedGradient {
 
 // The renormalised gradient of f at particle i over the neighbours j of its row for which
 // accept(j) is true (Shao eqs. 15-17; Dincer eqs. 8-9). `volume` holds V_j = m_j / rho_j.
-template <class K, class Accept>
-RenormalisedGradient renormalised_gradient(const K& k, const std::vector<Vec2>& x, const std::vector<double>& f,
-                                           const std::vector<double>& volume, const NeighbourList& nl,
-                                           std::size_t i, Accept&& accept,
+template <class Accept>
+RenormalisedGradient renormalised_gradient(const PairList& pairs, const std::vector<double>& f,
+                                           const std::vector<double>& volume, std::size_t i, Accept&& accept,
                                            double min_eigen = kMinCorrectionEigenvalue) {
   Mat2 m = zero_mat2();
   Vec2 sum;
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const std::size_t j = *it;
-    if (!accept(j)) continue;
-    const Vec2 rij = x[i] - x[j];
-    const double F = k.gradient_factor(norm(rij));
-    if (F == 0.0) continue;
-    add_moment(m, rij, volume[j], F);
-    sum += rij * (volume[j] * (f[j] - f[i]) * F);
-  }
+  pairs.for_each(i, [&](const Pair& q) {
+    const std::size_t j = q.j;
+    if (!accept(j) || q.f == 0.0) return;
+    add_moment(m, q.rij, volume[j], q.f);
+    sum += q.rij * (volume[j] * (f[j] - f[i]) * q.f);
+  });
   RenormalisedGradient g;
   g.corrected = invert_moment_matrix(m, g.correction, min_eigen);
   g.gradient = g.correction * sum;
@@ -95,18 +91,13 @@ RenormalisedGradient renormalised_gradient(const K& k, const std::vector<Vec2>& 
 }
 
 // L_i alone (Shao eq. 17), over the neighbours accepted by `accept`.
-template <class K, class Accept>
-Mat2 kernel_correction_matrix(const K& k, const std::vector<Vec2>& x, const std::vector<double>& volume,
-                              const NeighbourList& nl, std::size_t i, Accept&& accept,
-                              double min_eigen = kMinCorrectionEigenvalue) {
+template <class Accept>
+Mat2 kernel_correction_matrix(const PairList& pairs, const std::vector<double>& volume, std::size_t i,
+                              Accept&& accept, double min_eigen = kMinCorrectionEigenvalue) {
   Mat2 m = zero_mat2();
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const std::size_t j = *it;
-    if (!accept(j)) continue;
-    const Vec2 rij = x[i] - x[j];
-    const double F = k.gradient_factor(norm(rij));
-    if (F != 0.0) add_moment(m, rij, volume[j], F);
-  }
+  pairs.for_each(i, [&](const Pair& q) {
+    if (accept(q.j) && q.f != 0.0) add_moment(m, q.rij, volume[q.j], q.f);
+  });
   Mat2 l;
   invert_moment_matrix(m, l, min_eigen);
   return l;

@@ -6,7 +6,7 @@
 
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/physics/frame.hpp"
-#include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
@@ -14,18 +14,16 @@ namespace sloshsph {
 // its normal component reflected, u_w = u~ - 2 ((u~ - v_w) . n) n (v_w = 0 for a fixed wall). In viscous and turbulent terms
 // the fluid then feels no tangential drag and twice its normal velocity (no penetration).
 // Uses the local wall normal, so it holds on sloped and curved walls (thesis 3.3.2.2).
-template <class K>
-void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourList& nl, std::vector<Vec2>& velocity) {
+// `pairs` at the positions the velocities belong to.
+inline void extrapolate_wall_velocity(const Particles& p, const PairList& pairs, std::vector<Vec2>& velocity) {
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
-    const Vec2 rw = p.position[w];
     Vec2 sum;
     double wsum = 0.0;
-    for (auto it = nl.begin(w); it != nl.end(w); ++it) {
-      const double W = k.w(norm(rw - p.position[*it]));
-      sum += W * p.velocity[*it];
-      wsum += W;
-    }
+    pairs.for_each(w, [&](const Pair& q) {
+      sum += q.w * p.velocity[q.j];
+      wsum += q.w;
+    });
     const Vec2 u = wsum > 0.0 ? sum / wsum : Vec2{};
     const Vec2 n = p.normal[w];
     // A moving wall (velocity v_w) reflects the normal velocity relative to itself: the mean of
@@ -38,8 +36,8 @@ void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourLi
 // Thesis eq. 2.19 (Adami et al. 2012, eq. 27) with the frame acceleration:
 //   p_w = (sum_f p_f W_wf + (g - a) . sum_f rho_f (r_w - r_f) W_wf) / sum_f W_wf,
 // where g - a is the tank-frame body force at the wall particle (frame.at(r_w, 0)) less the
-// wall's own acceleration in the tank frame (moving walls: elastic plates). `position` gives
-// the fluid positions to use (r* inside a step). A wall particle with no fluid around it gets
+// wall's own acceleration in the tank frame (moving walls: elastic plates). `pairs` are taken at
+// the fluid positions to use (r* inside an ISPH step). A wall particle with no fluid around it gets
 // p = 0, and the result is clipped at 0: above the free surface the extrapolation goes negative,
 // and a negative wall pressure would pull surface particles up along the wall (the fluid
 // mirrored there is air, p = 0).
@@ -47,22 +45,19 @@ void extrapolate_wall_velocity(const K& k, const Particles& p, const NeighbourLi
 // `pressure_back` from the fluid behind it. Tank walls have fluid on one side only; a thin wall
 // (an explicit screen slat, one particle thick) has fluid on both, and each side must feel only
 // its own fluid or the pressure drop across the screen would be averaged away.
-template <class K>
-void adami_wall_pressure(const K& k, Particles& p, const NeighbourList& nl, const std::vector<Vec2>& position,
-                         const FrameForce& frame, double rho0) {
+inline void adami_wall_pressure(Particles& p, const PairList& pairs, const FrameForce& frame, double rho0) {
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
     const Vec2 rw = p.position[w], n = p.normal[w];
     double psum[2] = {0.0, 0.0}, wsum[2] = {0.0, 0.0};
     Vec2 rsum[2];
-    for (auto it = nl.begin(w); it != nl.end(w); ++it) {
-      const Vec2 rwf = rw - position[*it];
+    pairs.for_each(w, [&](const Pair& q) {
+      const Vec2 rwf = q.rij;
       const int side = dot(rwf, n) > 0.0 ? 1 : 0;  // fluid behind the wall: r_f - r_w against n
-      const double W = k.w(norm(rwf));
-      psum[side] += W * p.pressure[*it];
-      rsum[side] += W * rwf;
-      wsum[side] += W;
-    }
+      psum[side] += q.w * p.pressure[q.j];
+      rsum[side] += q.w * rwf;
+      wsum[side] += q.w;
+    });
     const Vec2 g = frame.at(rw, Vec2{}) - p.wall_acceleration(w);  // Adami eq. 27: (g - a_w)
     auto extrapolate = [&](int s) { return wsum[s] > 0.0 ? std::max(0.0, (psum[s] + rho0 * dot(g, rsum[s])) / wsum[s]) : 0.0; };
     p.pressure[w] = extrapolate(0);

@@ -6,7 +6,7 @@
 
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/core/vec2.hpp"
-#include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
@@ -15,19 +15,15 @@ namespace sloshsph {
 // pressure). A constant density is reproduced exactly whatever the particle arrangement,
 // including at a free surface where the kernel is truncated; particle-scale noise is
 // averaged out. Writes the fluid densities to `out` (size >= n_fluid); reads p.density.
-template <class K>
-void shepard_density(const K& k, const Particles& p, const NeighbourList& nl, std::vector<double>& out) {
-  const double m = p.mass, w0 = k.w(0.0);
+inline void shepard_density(const Particles& p, const PairList& pairs, std::vector<double>& out) {
+  const double m = p.mass, w0 = pairs.self_w();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     double num = m * w0, den = m * w0 / p.density[i];
-    const Vec2 ri = p.position[i];
-    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-      const std::size_t j = *it;
-      const double W = k.w(norm(ri - p.position[j]));
-      num += m * W;
-      den += m * W / p.density[j];
-    }
+    pairs.for_each(i, [&](const Pair& q) {
+      num += m * q.w;
+      den += m * q.w / p.density[q.j];
+    });
     out[i] = num / den;
   }
 }
@@ -38,22 +34,18 @@ void shepard_density(const K& k, const Particles& p, const NeighbourList& nl, st
 //   u_w   = -sum_f V_f u_f W / sum_f V_f W     (eq. 30: no slip, the image of the fluid velocity)
 // V_f = m / rho_f. A wall particle with no fluid around it gets rho0 and zero velocity.
 // Writes p.density and p.velocity of the wall particles only.
-template <class K>
-void shepard_wall_values(const K& k, Particles& p, const NeighbourList& nl, double rho0) {
+inline void shepard_wall_values(Particles& p, const PairList& pairs, double rho0) {
   const double m = p.mass;
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
-    const Vec2 rw = p.position[w];
     double mass_sum = 0.0, volume_sum = 0.0;
     Vec2 u_sum;
-    for (auto it = nl.begin(w); it != nl.end(w); ++it) {
-      const std::size_t f = *it;
-      const double W = k.w(norm(rw - p.position[f]));
-      const double VW = m / p.density[f] * W;
-      mass_sum += m * W;
+    pairs.for_each(w, [&](const Pair& q) {
+      const double VW = m / p.density[q.j] * q.w;
+      mass_sum += m * q.w;
       volume_sum += VW;
-      u_sum += VW * p.velocity[f];
-    }
+      u_sum += VW * p.velocity[q.j];
+    });
     if (volume_sum > 0.0) {
       p.density[w] = mass_sum / volume_sum;
       p.velocity[w] = -(u_sum / volume_sum);

@@ -10,6 +10,7 @@
 #include "sloshsph/physics/walls.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/operators.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
@@ -74,7 +75,8 @@ std::size_t IsphData::memory_bytes() const {
   return n * per + extra_acceleration.capacity() * sizeof(Vec2) + ppe_row.capacity() * sizeof(int) +
          ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
          ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
-         krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2);
+         krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2) +
+         pairs.memory_bytes();
 }
 
 std::size_t IsphScheme::memory_bytes() const { return data_.memory_bytes() + neighbours_.memory_bytes(); }
@@ -105,34 +107,30 @@ void IsphScheme::mark_repulsive_layer(const Particles& p) {
   }
 }
 
+void IsphScheme::build_pairs(const std::vector<Vec2>& position) {
+  with_kernel(kernel_type_, h_, [&](const auto& k) { data_.pairs.build(k, position, neighbours_); });
+}
+
 void IsphScheme::initialise(Particles& p, const FrameForce& frame) {
   update_neighbours(p);
   data_.resize(p.size());
-  with_kernel(kernel_type_, h_, [&](const auto& k) {
-    extrapolate_wall_velocity(k, p, neighbours_, p.velocity);
-    // The pressure that holds the particles as they are: the discrete PPE with a zero source
-    // (fluid at rest), its free surface and wall conditions, solved once. Starting from the
-    // analytic hydrostatic field instead would start a pressure transient (the top particles
-    // sit dp/2 below the free surface they stand for, and carry p = 0).
-    IsphData& d = data_;
-    const double w0 = k.w(0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) d.position_star[i] = p.position[i];
-    for (std::size_t i = 0; i < p.n_fluid; ++i) {
-      double wsum = w0;
-      for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) wsum += k.w(norm(p.position[i] - p.position[*it]));
-      d.free_surface[i] = p.mass * wsum < scheme_.free_surface_threshold * rho_ref_ ? 1 : 0;
-      d.ppe_source[i] = 0.0;
-    }
-    StepInput in;
-    in.frame = frame;
-    solve_pressure_implicit(k, p, in);
-  });
-}
-
-void IsphScheme::step(Particles& p, const StepInput& in) {
-  update_neighbours(p);
-  data_.resize(p.size());
-  with_kernel(kernel_type_, h_, [&](const auto& k) { step_with(k, p, in); });
+  IsphData& d = data_;
+  for (std::size_t i = 0; i < p.size(); ++i) d.position_star[i] = p.position[i];
+  build_pairs(d.position_star);
+  extrapolate_wall_velocity(p, d.pairs, p.velocity);
+  // The pressure that holds the particles as they are: the discrete PPE with a zero source
+  // (fluid at rest), its free surface and wall conditions, solved once. Starting from the
+  // analytic hydrostatic field instead would start a pressure transient (the top particles
+  // sit dp/2 below the free surface they stand for, and carry p = 0).
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    double wsum = d.pairs.self_w();
+    d.pairs.for_each(i, [&](const Pair& q) { wsum += q.w; });
+    d.free_surface[i] = p.mass * wsum < scheme_.free_surface_threshold * rho_ref_ ? 1 : 0;
+    d.ppe_source[i] = 0.0;
+  }
+  StepInput in;
+  in.frame = frame;
+  solve_pressure_implicit(p, in);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -141,61 +139,36 @@ void IsphScheme::step(Particles& p, const StepInput& in) {
 
 namespace {
 
-// Velocity gradient (symmetrised) -> Smagorinsky eddy viscosity -> SPS stress tau/rho.
-// Thesis eqs. 2.8, 2.9: nu_t = (Cs dp)^2 |S|, |S| = sqrt(2 S:S), k_t = (nu_t / (Ct dp))^2,
-// tau/rho = 2 nu_t S - 2/3 k_t I. Walls carry their free-slip image velocity.
-template <class K>
-void sps_stress(const K& k, const Particles& p, const NeighbourList& nl, double cs, double ct, double dp,
+// Velocity gradient -> SPS stress tau/rho, thesis eqs. 2.8, 2.9 with the mixing length Cs dp
+// (physics/turbulence.hpp). Walls carry their free-slip image velocity.
+void sps_stress(const Particles& p, const PairList& pairs, double cs, double ct, double dp,
                 std::vector<SymTensor2>& tau) {
-  const double V = p.volume, reach2 = kernel_reach2(k);
-  const double l2 = (cs * dp) * (cs * dp);
+  const SpsClosure closure{(cs * dp) * (cs * dp), ct * dp};
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    const Vec2 ri = p.position[i], ui = p.velocity[i];
-    double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
-    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - p.position[j];
-      const double r2 = norm2(rij);
-      if (r2 > reach2) continue;
-      const double F = k.gradient_factor(std::sqrt(r2));
-      if (F == 0.0) continue;
-      const Vec2 du = (p.velocity[j] - ui) * (V * F);
-      dudx += du.x * rij.x;
-      dudy += du.x * rij.y;
-      dvdx += du.y * rij.x;
-      dvdy += du.y * rij.y;
-    }
-    const double sxy = 0.5 * (dudy + dvdx);
-    const double s_mag = std::sqrt(2.0 * (dudx * dudx + dvdy * dvdy + 2.0 * sxy * sxy));
-    const double nu_t = l2 * s_mag;
-    const double kt = (nu_t / (ct * dp)) * (nu_t / (ct * dp));
-    tau[i] = {2.0 * nu_t * dudx - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * dvdy - 2.0 / 3.0 * kt};
+    double nu_t = 0.0;
+    tau[i] = sps_stress_of(velocity_gradient(pairs, p.velocity, p.volume, i), closure, nu_t);
   }
 }
 
 // Eq. 2.10: u* = u + dt (nu lap u + div(tau)/rho + body force). Laminar term eq. 2.16 with
 // rho_i = rho_j = rho0: 8 m mu / (2 rho0)^2 = 2 V nu. SPS term eq. 2.17; a wall neighbour
 // mirrors the stress of particle i (zero normal gradient of tau at the wall).
-template <class K>
-void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, const StepInput& in, double nu,
-                      double eta2, bool turbulence, const std::vector<double>& repulsion, double repulsion_range,
-                      IsphData& d) {
-  const double V = p.volume, reach2 = kernel_reach2(k);
+void predict_velocity(const Particles& p, const PairList& pairs, const StepInput& in, double nu, double eta2,
+                      bool turbulence, const std::vector<double>& repulsion, double repulsion_range, IsphData& d) {
+  const double V = p.volume;
   const bool repulsive = !repulsion.empty();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = p.position[i], ui = p.velocity[i];
     const SymTensor2 ti = turbulence ? d.sps_stress[i] : SymTensor2{};
     Vec2 a_fluid, a_wall;
-    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - p.position[j];
-      const double r2 = norm2(rij);
-      if (r2 > reach2) continue;
-      const double F = k.gradient_factor(std::sqrt(r2));
-      if (F == 0.0) continue;
-      Vec2 a = (ui - p.velocity[j]) * (nu * laplacian_weight(V, F, r2, eta2));
+    pairs.for_each(i, [&](const Pair& q) {
+      if (q.f == 0.0) return;
+      const std::size_t j = q.j;
+      const Vec2 rij = q.rij;
+      const double F = q.f;
+      Vec2 a = (ui - p.velocity[j]) * (nu * laplacian_weight(V, F, q.r2(), eta2));
       if (turbulence) {
         const SymTensor2 tj = p.is_fluid(j) ? d.sps_stress[j] : ti;
         const double sxx = ti.xx + tj.xx, sxy = ti.xy + tj.xy, syy = ti.yy + tj.yy;
@@ -203,14 +176,14 @@ void predict_velocity(const K& k, const Particles& p, const NeighbourList& nl, c
       }
       if (p.is_fluid(j)) {
         a_fluid += a;
-        continue;
+        return;
       }
       // Thesis eq. 3.18: the first wall layer repels fluid closer than r0 (a wall force, so it
       // is part of the base shear).
       const double strength = repulsive ? repulsion[j - p.n_fluid] : 0.0;
       if (strength > 0.0) a += thesis_wall_repulsion(rij, strength, repulsion_range);
       a_wall += a;
-    }
+    });
     d.wall_acceleration[i] = a_wall;
     d.velocity_old[i] = ui;
     const Vec2 extra = d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i];
@@ -242,27 +215,21 @@ void predict_position(const Particles& p, double dt, IsphData& d) {
 //    the body-force increment the fluid received (less the wall's own acceleration for a moving
 //    wall). The wall pressure of eq. 2.19 already
 //    imposes dp/dn = rho (g - a).n; with u*_w = 0 the source would impose it a second time.
-template <class K>
-void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, const StepInput& in,
-                            double alpha, double rho_ref, double threshold, IsphData& d) {
-  const double V = p.volume, m = p.mass, w0 = k.w(0.0), dt = in.dt, reach2 = kernel_reach2(k);
+void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput& in, double alpha, double rho_ref,
+                            double threshold, IsphData& d) {
+  const double V = p.volume, m = p.mass, w0 = pairs.self_w(), dt = in.dt;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    const Vec2 ri = d.position_star[i], ui = d.velocity_star[i];
+    const Vec2 ui = d.velocity_star[i];
     double wsum = w0, wall_sum = 0.0, div = 0.0;
-    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - d.position_star[j];
-      const double r2 = norm2(rij);
-      if (r2 > reach2) continue;
-      const double r = std::sqrt(r2);
-      const double w = k.w(r);
-      wsum += w;
-      if (!p.is_fluid(j)) wall_sum += w;
+    pairs.for_each(i, [&](const Pair& q) {
+      const std::size_t j = q.j;
+      wsum += q.w;
+      if (!p.is_fluid(j)) wall_sum += q.w;
       const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j]
                                     : p.velocity[j] + dt * (in.frame.at(p.position[j], Vec2{}) - p.wall_acceleration(j));
-      div += V * k.gradient_factor(r) * dot(uj - ui, rij);
-    }
+      div += V * q.f * dot(uj - ui, q.rij);
+    });
     const double rho_star = m * wsum;
     p.density[i] = rho_star;
     // 1: free surface (eq. 2.20). 2: spray, when fluid fills less than kSplashFraction of the
@@ -278,25 +245,20 @@ void density_and_ppe_source(const K& k, Particles& p, const NeighbourList& nl, c
 //   -grad(p)_i / rho0 = -(1/rho0) sum_j V (p_i + p_j) grad_i W_ij,
 // then eq. 2.15 for the position. Pressure forces of wall neighbours are kept apart for
 // the base shear.
-template <class K>
-void correct_and_advance(const K& k, Particles& p, const NeighbourList& nl, double dt, double rho0, IsphData& d) {
-  const double c = p.volume / rho0, reach2 = kernel_reach2(k);
+void correct_and_advance(Particles& p, const PairList& pairs, double dt, double rho0, IsphData& d) {
+  const double c = p.volume / rho0;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = d.position_star[i];
     const double pi = p.pressure[i];
     Vec2 a_fluid, a_wall;
-    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - d.position_star[j];
-      const double r2 = norm2(rij);
-      if (r2 > reach2) continue;
-      const double F = k.gradient_factor(std::sqrt(r2));
+    pairs.for_each(i, [&](const Pair& q) {
+      const std::size_t j = q.j;
       const double pj = p.is_fluid(j) ? p.pressure[j] : wall_pressure_seen_from(p, j, ri);
-      const Vec2 a = rij * (-c * (pi + pj) * F);
+      const Vec2 a = q.rij * (-c * (pi + pj) * q.f);
       if (p.is_fluid(j)) a_fluid += a;
       else a_wall += a;
-    }
+    });
     const Vec2 u_new = d.velocity_star[i] + dt * (a_fluid + a_wall);
     d.wall_acceleration[i] += a_wall;
     p.position[i] += 0.5 * dt * (d.velocity_old[i] + u_new);
@@ -316,8 +278,7 @@ double IsphScheme::clip(double pressure) const {
   return scheme_.clip_negative_pressure ? std::max(pressure, 0.0) : pressure;
 }
 
-template <class K>
-void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInput& in) {
+void IsphScheme::solve_pressure_explicit(Particles& p, const StepInput& in) {
   // Eq. 2.18 (Yeylaghi et al. 2016): one Jacobi sweep of the discrete PPE per step from
   // the previous pressures, p_i = (b_i + sum_j lambda_ij p_j) / sum_j lambda_ij, with
   // lambda_ij = (2 V / rho0) F_ij r^2 / (r^2 + eta^2) (eq. 2.5 with rho_i = rho_j).
@@ -334,22 +295,20 @@ void IsphScheme::solve_pressure_explicit(const K& k, Particles& p, const StepInp
     }
     const Vec2 ri = d.position_star[i];
     double diag = 0.0, off = 0.0;
-    for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - d.position_star[j];
-      const double r2 = norm2(rij);
-      const double lambda = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2) / rho0_;
+    d.pairs.for_each(i, [&](const Pair& q) {
+      const std::size_t j = q.j;
+      const double lambda = laplacian_weight(p.volume, q.f, q.r2(), eta2) / rho0_;
       diag += lambda;
       const bool zero = p.is_fluid(j) && d.free_surface[j] >= zero_from;
       const double pj = p.is_fluid(j) ? p.pressure[j] : wall_pressure_seen_from(p, j, ri);
       off += zero ? 0.0 : lambda * pj;
-    }
+    });
     if (!dirichlet) diag = std::min(diag, lambda_full_);  // missing neighbours: air at p = 0 (lambda < 0)
     next[i] = diag != 0.0 ? (d.ppe_source[i] + off) / diag : 0.0;
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = clip(next[i]);
-  adami_wall_pressure(k, p, neighbours_, d.position_star, in.frame, rho0_);
+  adami_wall_pressure(p, d.pairs, in.frame, rho0_);
   diagnostics_.solver_iterations = 1;
   diagnostics_.solver_residual = 0.0;
 }
@@ -373,44 +332,38 @@ PpeNeighbour ppe_neighbour(const Particles& p, std::size_t i, std::size_t j, Vec
 // One row of the implicit PPE (see solve_pressure_implicit) into its reserved slots, the diagonal
 // first; entries of zero weight (neighbours of the Verlet skin beyond the kernel's support) are
 // left out. Returns the right side of the row.
-template <class K>
-double IsphScheme::assemble_ppe_row(const K& k, const Particles& p, const StepInput& in, std::size_t i,
-                                    std::size_t row) {
+double IsphScheme::assemble_ppe_row(const Particles& p, const StepInput& in, std::size_t i, std::size_t row) {
   IsphData& d = data_;
   SparseRows& A = d.ppe_matrix;
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   const Vec2 ri = d.position_star[i];
-  const double reach2 = kernel_reach2(k);
   std::size_t slot = A.slot_begin[row] + 1;
   double diag = 0.0;
   double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;
-  for (auto it = neighbours_.begin(i); it != neighbours_.end(i); ++it) {
-    const std::size_t j = *it;
-    const Vec2 rij = ri - d.position_star[j];
-    const double r2 = norm2(rij);
-    if (r2 > reach2) continue;
-    const PpeNeighbour kind = ppe_neighbour(p, i, j, ri, rij);
-    if (kind == PpeNeighbour::ignored) continue;
+  d.pairs.for_each(i, [&](const Pair& q) {
+    const std::size_t j = q.j;
+    const PpeNeighbour kind = ppe_neighbour(p, i, j, ri, q.rij);
+    if (kind == PpeNeighbour::ignored) return;
     double coef;
     if (p.is_fluid(i)) {
-      coef = laplacian_weight(p.volume, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
+      coef = laplacian_weight(p.volume, q.f, q.r2(), eta2_) / rho0_;
       if (kind == PpeNeighbour::back_pressure) {
         diag += coef;
         rhs += coef * p.pressure_back[j];
-        continue;
+        return;
       }
     } else {
-      coef = k.w(std::sqrt(r2));
-      rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), rij) * rho0_ * coef;  // moving walls: g - a_w
+      coef = q.w;
+      rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), q.rij) * rho0_ * coef;  // moving walls: g - a_w
     }
-    if (coef == 0.0) continue;
+    if (coef == 0.0) return;
     diag += coef;
     if (d.ppe_row[j] >= 0) {
-      assert(slot < A.slot_begin[row] + d.ppe_row_capacity[row] && "a row has at most one slot per listed neighbour");
+      assert(slot < A.slot_begin[row] + d.ppe_row_capacity[row] && "a row has at most one slot per pair");
       A.column[slot] = static_cast<std::uint32_t>(d.ppe_row[j]);
       A.value[slot++] = -coef;
     }
-  }
+  });
   if (diag == 0.0) diag = 1.0;  // isolated wall particle: p_w = 0
   if (!dirichlet && p.is_fluid(i)) diag = std::min(diag, lambda_full_);  // air at p = 0
   A.column[A.slot_begin[row]] = static_cast<std::uint32_t>(row);
@@ -439,8 +392,7 @@ KrylovReport IsphScheme::solve_assembled_ppe(bool multigrid) {
 
 // The unknowns of the implicit PPE (fluid not at p = 0, walls with neighbours) and their rows,
 // written in parallel into slots reserved per row; the solution starts from p(t).
-template <class K>
-void IsphScheme::assemble_ppe(const K& k, const Particles& p, const StepInput& in) {
+void IsphScheme::assemble_ppe(const Particles& p, const StepInput& in) {
   IsphData& d = data_;
   const std::size_t n = p.size();
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
@@ -457,10 +409,9 @@ void IsphScheme::assemble_ppe(const K& k, const Particles& p, const StepInput& i
     if (neighbours_.count(w) > 0) add_unknown(w);
   const std::size_t rows = d.ppe_particle.size();
   d.ppe_row_capacity.resize(rows);
-  // A row has its diagonal and at most one slot per listed neighbour. The list's count bounds it
-  // without a pass over the pairs (the exact count, within the support and of the right kind,
-  // cost 6% of a step); the slots of the skin's pairs stay unused.
-  for (std::size_t row = 0; row < rows; ++row) d.ppe_row_capacity[row] = neighbours_.count(d.ppe_particle[row]) + 1;
+  // A row has its diagonal and at most one slot per pair within the support (the exact count, of
+  // the right kind, would cost a pass over the pairs).
+  for (std::size_t row = 0; row < rows; ++row) d.ppe_row_capacity[row] = d.pairs.count(d.ppe_particle[row]) + 1;
   d.ppe_matrix.reserve_rows(d.ppe_row_capacity);
   d.ppe_rhs.resize(rows);
   d.ppe_solution.resize(rows);
@@ -468,7 +419,7 @@ void IsphScheme::assemble_ppe(const K& k, const Particles& p, const StepInput& i
   for (std::size_t row = 0; row < rows; ++row) {
     const std::size_t i = d.ppe_particle[row];
     d.ppe_solution[row] = p.pressure[i];
-    d.ppe_rhs[row] = assemble_ppe_row(k, p, in, i, row);
+    d.ppe_rhs[row] = assemble_ppe_row(p, in, i, row);
   }
 }
 
@@ -486,8 +437,7 @@ std::size_t IsphScheme::pin_unanchored_blocks(const Particles& p) {
   return pinned;
 }
 
-template <class K>
-void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInput& in) {
+void IsphScheme::solve_pressure_implicit(Particles& p, const StepInput& in) {
   // The same discrete equations as the explicit update, solved exactly each step:
   // fluid rows  sum_j lambda_ij (p_i - p_j) = b_i        (free-surface p = 0),
   // wall rows   sum_f W_wf p_w - sum_f W_wf p_f = (g - a)·sum_f rho0 r_wf W_wf   (eq. 2.19).
@@ -495,7 +445,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
   // preconditioner (scheme.preconditioner), warm-started from p(t).
   IsphData& d = data_;
   diagnostics_.pinned_particles = 0;
-  assemble_ppe(k, p, in);
+  assemble_ppe(p, in);
   const bool multigrid = scheme_.preconditioner == Preconditioner::multigrid;
   KrylovReport report = solve_assembled_ppe(multigrid);
   int iterations = report.iterations;
@@ -509,7 +459,7 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
     // 0.4 ms at 6,219 rows, would be 2-3% of every step): a step that converges is unchanged.
     diagnostics_.pinned_particles = pin_unanchored_blocks(p);
     if (diagnostics_.pinned_particles > 0) {
-      assemble_ppe(k, p, in);
+      assemble_ppe(p, in);
       report = solve_assembled_ppe(multigrid);
       iterations += report.iterations;
     }
@@ -533,52 +483,66 @@ void IsphScheme::solve_pressure_implicit(const K& k, Particles& p, const StepInp
     p.pressure[i] = d.ppe_row[i] >= 0 ? clip(d.ppe_solution[d.ppe_row[i]]) : 0.0;
   // Wall pressures from the solved fluid, with the clipping at 0 of adami_wall_pressure
   // (the linear system cannot hold the clip; it matters only near the free surface).
-  adami_wall_pressure(k, p, neighbours_, d.position_star, in.frame, rho0_);
+  adami_wall_pressure(p, d.pairs, in.frame, rho0_);
 }
 
-template <class K>
-void IsphScheme::stage_with(const K& k, IsphStage stage, Particles& p, const StepInput& in) {
+// The pairs each stage reads: those at r(t) before the prediction, at r* from the density on.
+bool IsphScheme::reads_pairs_at_r_star(IsphStage stage) {
+  return stage == IsphStage::density_and_ppe_source || stage == IsphStage::pressure_solve ||
+         stage == IsphStage::correct_and_advance;
+}
+
+void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
   IsphData& d = data_;
   switch (stage) {
     case IsphStage::sps_stress:
-      sps_stress(k, p, neighbours_, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);
+      sps_stress(p, d.pairs, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);
       break;
     case IsphStage::predict: {
       if (scheme_.repulsive_walls && repulsion_strength_.size() != p.n_wall()) mark_repulsive_layer(p);
       static const std::vector<double> none;
-      predict_velocity(k, p, neighbours_, in, nu_, eta2_, scheme_.turbulence,
+      predict_velocity(p, d.pairs, in, nu_, eta2_, scheme_.turbulence,
                        scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
       predict_position(p, in.dt, d);
       break;
     }
     case IsphStage::density_and_ppe_source:
-      density_and_ppe_source(k, p, neighbours_, in, scheme_.alpha, rho_ref_, scheme_.free_surface_threshold, d);
+      density_and_ppe_source(p, d.pairs, in, scheme_.alpha, rho_ref_, scheme_.free_surface_threshold, d);
       break;
     case IsphStage::pressure_solve:
-      if (scheme_.pressure == PressureSolve::implicit_krylov) solve_pressure_implicit(k, p, in);
-      else solve_pressure_explicit(k, p, in);
+      if (scheme_.pressure == PressureSolve::implicit_krylov) solve_pressure_implicit(p, in);
+      else solve_pressure_explicit(p, in);
       break;
     case IsphStage::correct_and_advance:
-      correct_and_advance(k, p, neighbours_, in.dt, rho0_, d);
+      correct_and_advance(p, d.pairs, in.dt, rho0_, d);
       break;
   }
 }
 
-void IsphScheme::run_stage(IsphStage stage, Particles& p, const StepInput& in) {
-  with_kernel(kernel_type_, h_, [&](const auto& k) { stage_with(k, stage, p, in); });
+void IsphScheme::prepare_stage(IsphStage stage, const Particles& p) {
+  data_.resize(p.size());
+  build_pairs(reads_pairs_at_r_star(stage) ? data_.position_star : p.position);
 }
 
-template <class K>
-void IsphScheme::step_with(const K& k, Particles& p, const StepInput& in) {
+void IsphScheme::run_stage(IsphStage stage, Particles& p, const StepInput& in) {
+  assert(data_.pairs.rows() == p.size() && "prepare_stage first");
+  this->stage(stage, p, in);
+}
+
+void IsphScheme::step(Particles& p, const StepInput& in) {
+  update_neighbours(p);
+  data_.resize(p.size());
   IsphData& d = data_;
   d.extra_acceleration.clear();
-  if (in.extra) in.extra(p, d.extra_acceleration);                                // screens, eq. 2.28
-  extrapolate_wall_velocity(k, p, neighbours_, p.velocity);                      // free slip, 2.4.3.1
-  if (scheme_.turbulence) stage_with(k, IsphStage::sps_stress, p, in);          // eqs. 2.8-2.9
-  stage_with(k, IsphStage::predict, p, in);                                      // eqs. 2.10, 2.11, 3.18
-  stage_with(k, IsphStage::density_and_ppe_source, p, in);                       // eqs. 2.12, 2.13, 2.20
-  stage_with(k, IsphStage::pressure_solve, p, in);                               // eqs. 2.18 or 2.13, 2.19
-  stage_with(k, IsphStage::correct_and_advance, p, in);                          // eqs. 2.14, 2.15
+  if (in.extra) in.extra(p, d.extra_acceleration);                  // screens, eq. 2.28
+  build_pairs(p.position);                                          // the pairs at r(t)
+  extrapolate_wall_velocity(p, d.pairs, p.velocity);                // free slip, 2.4.3.1
+  if (scheme_.turbulence) stage(IsphStage::sps_stress, p, in);     // eqs. 2.8-2.9
+  stage(IsphStage::predict, p, in);                                 // eqs. 2.10, 2.11, 3.18
+  build_pairs(d.position_star);                                     // the pairs at r*
+  stage(IsphStage::density_and_ppe_source, p, in);                  // eqs. 2.12, 2.13, 2.20
+  stage(IsphStage::pressure_solve, p, in);                          // eqs. 2.18 or 2.13, 2.19
+  stage(IsphStage::correct_and_advance, p, in);                     // eqs. 2.14, 2.15
 
   // Diagnostics, reduced in a fixed order so they do not depend on the thread count.
   Vec2 wall{};

@@ -14,14 +14,12 @@
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/schemes/ppe_multigrid.hpp"
 #include "sloshsph/schemes/ppe_solver.hpp"
+#include "sloshsph/physics/turbulence.hpp"
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
-
-struct SymTensor2 {
-  double xx = 0.0, xy = 0.0, yy = 0.0;
-};
 
 struct IsphData {
   std::vector<Vec2> velocity_old;    // u(t)
@@ -42,6 +40,9 @@ struct IsphData {
   BicgstabWork krylov;
   Multigrid multigrid;
   std::vector<Vec2> ppe_row_position;  // r* of each row's particle (multigrid aggregates)
+  // The pairs within the kernel's support, built at r(t) at the start of a step and again at r*
+  // after the prediction (sph/pairs.hpp).
+  PairList pairs;
   void resize(std::size_t n);
   std::size_t memory_bytes() const;
 };
@@ -61,7 +62,9 @@ class IsphScheme {
   void initialise(Particles& particles, const FrameForce& frame);
 
   // One stage alone on `particles`, with the solver data the last step left (the stage
-  // benchmarks, bench/bench_stages.cpp); step() is these in order.
+  // benchmarks, bench/bench_stages.cpp); step() is these in order. prepare_stage builds the pairs
+  // the stage reads (at r(t) of `particles`, or at the r* the last step left) and must come first.
+  void prepare_stage(IsphStage stage, const Particles& particles);
   void run_stage(IsphStage stage, Particles& particles, const StepInput& input);
 
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
@@ -74,14 +77,14 @@ class IsphScheme {
   std::size_t memory_bytes() const;
 
  private:
-  template <class K> void step_with(const K& kernel, Particles& p, const StepInput& in);
-  template <class K> void stage_with(const K& kernel, IsphStage stage, Particles& p, const StepInput& in);
-  template <class K> void solve_pressure_explicit(const K& kernel, Particles& p, const StepInput& in);
-  template <class K> void solve_pressure_implicit(const K& kernel, Particles& p, const StepInput& in);
-  template <class K> void assemble_ppe(const K& kernel, const Particles& p, const StepInput& in);
+  void build_pairs(const std::vector<Vec2>& position);
+  static bool reads_pairs_at_r_star(IsphStage stage);
+  void stage(IsphStage stage, Particles& p, const StepInput& in);
+  void solve_pressure_explicit(Particles& p, const StepInput& in);
+  void solve_pressure_implicit(Particles& p, const StepInput& in);
+  void assemble_ppe(const Particles& p, const StepInput& in);
   std::size_t pin_unanchored_blocks(const Particles& p);
-  template <class K>
-  double assemble_ppe_row(const K& kernel, const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
+  double assemble_ppe_row(const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
   KrylovReport solve_ppe_system(bool multigrid);
   KrylovReport solve_assembled_ppe(bool multigrid);
   void update_neighbours(Particles& p);

@@ -78,7 +78,7 @@ std::size_t WcsphScheme::memory_bytes() const {
                                 sizeof(SymTensor2);
   return n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
          (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) + repulsive_.capacity() +
-         neighbours_.memory_bytes();
+         neighbours_.memory_bytes() + d.pairs.memory_bytes();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -173,41 +173,28 @@ void WcsphScheme::fluid_pressure(Particles& p) const {
 
 namespace {
 
-// Turbulent stress R = tau / rho of fluid particle i from its velocity gradient
+// Velocity gradient of fluid particle i for its turbulent stress (physics/turbulence.hpp):
 // grad(u)_kl = sum_j V_j (u_j - u_i)_k (L_i grad W)_l (walls carry their image velocities).
 //  * Smagorinsky (Shao eqs. 21-23): nu_t = (Cs h)^2 sqrt(2 S:S), R = 2 nu_t S. Shao gives no
 //    closure for the turbulent kinetic energy k; its isotropic part -2/3 k I only adds to the
 //    pressure, so k = 0 here.
 //  * SPS (as the ISPH scheme, thesis eqs. 2.8-2.9): nu_t = (Cs dp)^2 |S|, k = (nu_t / (Ct dp))^2,
 //    R = 2 nu_t S - 2/3 k I.
-struct TurbulenceModel {
-  WcsphTurbulence type = WcsphTurbulence::none;
-  double mixing_length2 = 0.0;  // (Cs h)^2 or (Cs dp)^2
-  double ct_dp = 1.0;           // Ct dp (SPS)
-};
-
-template <class K>
-SymTensor2 turbulent_stress(const K& k, const Particles& p, const NeighbourList& nl, const std::vector<double>& volume,
-                            const Mat2& correction, std::size_t i, const TurbulenceModel& model, double& nu_t) {
-  const Vec2 ri = p.position[i], ui = p.velocity[i];
-  double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const std::size_t j = *it;
-    const Vec2 rij = ri - p.position[j];
-    const double F = k.gradient_factor(norm(rij));
-    if (F == 0.0) continue;
-    const Vec2 g = correction * (rij * F);
-    const Vec2 du = (p.velocity[j] - ui) * volume[j];
-    dudx += du.x * g.x;
-    dudy += du.x * g.y;
-    dvdx += du.y * g.x;
-    dvdy += du.y * g.y;
-  }
-  const double sxy = 0.5 * (dudy + dvdx);
-  const double s_mag = std::sqrt(2.0 * (dudx * dudx + dvdy * dvdy + 2.0 * sxy * sxy));
-  nu_t = model.mixing_length2 * s_mag;
-  const double kt = model.type == WcsphTurbulence::sps ? (nu_t / model.ct_dp) * (nu_t / model.ct_dp) : 0.0;
-  return {2.0 * nu_t * dudx - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * dvdy - 2.0 / 3.0 * kt};
+VelocityGradient corrected_velocity_gradient(const Particles& p, const PairList& pairs,
+                                             const std::vector<double>& volume, const Mat2& correction,
+                                             std::size_t i) {
+  const Vec2 ui = p.velocity[i];
+  VelocityGradient grad;
+  pairs.for_each(i, [&](const Pair& q) {
+    if (q.f == 0.0) return;
+    const Vec2 g = correction * (q.rij * q.f);
+    const Vec2 du = (p.velocity[q.j] - ui) * volume[q.j];
+    grad.dudx += du.x * g.x;
+    grad.dudy += du.x * g.y;
+    grad.dvdx += du.y * g.x;
+    grad.dvdy += du.y * g.y;
+  });
+  return grad;
 }
 
 // The constants of the rate sweep.
@@ -253,26 +240,24 @@ struct RateTerms {
 //  * XSPH, Dincer eq. 11 (the minus sign lost in extraction restored): eps sum_{j fluid} m (u_j - u_i)
 //    W_ij / rho_ij, rho_ij = (rho_i + rho_j) / 2. Fluid neighbours only: the velocity is smoothed
 //    within the fluid; its pair terms cancel, so the mean drift is the mean velocity.
-template <class K>
-void rates(const K& k, const Particles& p, const NeighbourList& nl, const RateTerms& t,
-           const std::vector<std::uint8_t>& repulsive, WcsphData& d) {
+void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const std::vector<std::uint8_t>& repulsive,
+           WcsphData& d) {
   const std::size_t nf = p.n_fluid;
   const double m = t.mass;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 ri = p.position[i], ui = p.velocity[i];
+    const Vec2 ui = p.velocity[i];
     const double rho_i = p.density[i], pi = p.pressure[i];
     const Mat2 L = t.correct ? d.correction[i] : Mat2{};
     const Vec2 gi = d.density_gradient[i];
     const SymTensor2 Ri = t.turbulence ? d.stress[i] : SymTensor2{};
     double drho = 0.0, diffusion = 0.0;
     Vec2 a_fluid, a_wall, xs;
-    for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-      const std::size_t j = *it;
-      const Vec2 rij = ri - p.position[j];
-      const double r2 = norm2(rij);
-      const double r = std::sqrt(r2);
-      const double F = k.gradient_factor(r);
+    pairs.for_each(i, [&](const Pair& q) {
+      const std::size_t j = q.j;
+      const Vec2 rij = q.rij;
+      const double r2 = q.r2();
+      const double F = q.f;
       const bool fluid_j = j < nf;
       Vec2 a;
       if (!fluid_j && t.repulsive && repulsive[j - nf]) a += repulsive_acceleration(rij, t.c0, t.h, t.dp);
@@ -300,11 +285,11 @@ void rates(const K& k, const Particles& p, const NeighbourList& nl, const RateTe
                        syy = Ri.yy / rho_i + Rj.yy / rho_j;
           a += Vec2{sxx * grad_c.x + sxy * grad_c.y, sxy * grad_c.x + syy * grad_c.y} * m;
         }
-        if (fluid_j && t.xsph > 0.0) xs += (p.velocity[j] - ui) * (2.0 * m * k.w(r) / (rho_i + rho_j));
+        if (fluid_j && t.xsph > 0.0) xs += (p.velocity[j] - ui) * (2.0 * m * q.w / (rho_i + rho_j));
       }
       if (fluid_j) a_fluid += a;
       else a_wall += a;
-    }
+    });
     d.density_rate[i] = drho + t.delta * t.h * t.c0 * diffusion;
     d.acceleration[i] = a_fluid + a_wall;
     d.wall_acceleration[i] = a_wall;
@@ -329,10 +314,10 @@ Vec2 total_acceleration(const WcsphData& d, const FrameForce& frame, std::size_t
 //    no wall-wall pairs, and the repulsive particles' values are themselves Shepard averages of
 //    the same fluid, so both layers here interpolate the fluid directly. The pressure is clipped
 //    at 0 as adami_wall_pressure does (above the free surface the mirrored medium is air).
-template <class K>
-void WcsphScheme::wall_values(const K& k, Particles& p, const FrameForce& frame) {
+void WcsphScheme::wall_values(Particles& p, const FrameForce& frame) {
+  const PairList& pairs = data_.pairs;
   if (spec_.walls == WallTreatment::repulsive) {
-    shepard_wall_values(k, p, neighbours_, rho0_);
+    shepard_wall_values(p, pairs, rho0_);
 #pragma omp parallel for schedule(static)
     for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
       p.pressure[w] = std::max(0.0, eos_pressure(p.density[w], rho0_, c0_));
@@ -340,34 +325,37 @@ void WcsphScheme::wall_values(const K& k, Particles& p, const FrameForce& frame)
     }
     return;
   }
-  extrapolate_wall_velocity(k, p, neighbours_, p.velocity);
-  adami_wall_pressure(k, p, neighbours_, p.position, frame, rho0_);
+  extrapolate_wall_velocity(p, pairs, p.velocity);
+  adami_wall_pressure(p, pairs, frame, rho0_);
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) p.density[w] = eos_density(p.pressure[w], rho0_, c0_);
 }
 
+void WcsphScheme::build_pairs(const Particles& p) {
+  with_kernel(kernel_type_, h_, [&](const auto& k) { data_.pairs.build(k, p.position, neighbours_); });
+}
+
 // One evaluation of the rates at the state the particles hold (positions, velocities, densities).
-template <class K>
-void WcsphScheme::evaluate(const K& k, Particles& p, const FrameForce& frame) {
+void WcsphScheme::evaluate(Particles& p, const FrameForce& frame) {
   WcsphData& d = data_;
   const std::size_t nf = p.n_fluid;
   d.resize_fluid(nf);
   d.resize_all(p.size());
   if (repulsive_.size() != p.n_wall()) mark_repulsive_layer(p);
+  build_pairs(p);              // the pairs at the positions of this evaluation
 
   fluid_pressure(p);           // Dincer eq. 10
-  wall_values(k, p, frame);    // walls: Adami or Shao eqs. 29-30
+  wall_values(p, frame);       // walls: Adami or Shao eqs. 29-30
 #pragma omp parallel for schedule(static)
   for (std::size_t j = 0; j < p.size(); ++j) d.volume[j] = p.mass / p.density[j];
 
   // Renormalised density gradient (Dincer eqs. 8-9), kernel gradient correction (Shao eqs.
   // 16-17) and turbulent stress: per particle, before the rates that read them for neighbours.
   const bool turbulence = spec_.turbulence != WcsphTurbulence::none;
-  TurbulenceModel model;
-  model.type = spec_.turbulence;
-  if (spec_.turbulence == WcsphTurbulence::smagorinsky) model.mixing_length2 = (spec_.smagorinsky * h_) * (spec_.smagorinsky * h_);
-  else model.mixing_length2 = (spec_.smagorinsky * dp_) * (spec_.smagorinsky * dp_);
-  model.ct_dp = ct_ * dp_;
+  SpsClosure closure;
+  if (spec_.turbulence == WcsphTurbulence::smagorinsky) closure.mixing_length2 = (spec_.smagorinsky * h_) * (spec_.smagorinsky * h_);
+  else closure.mixing_length2 = (spec_.smagorinsky * dp_) * (spec_.smagorinsky * dp_);
+  closure.ct_dp = spec_.turbulence == WcsphTurbulence::sps ? ct_ * dp_ : 0.0;
   double nu_t_max = 0.0;
   if (spec_.delta > 0.0 || spec_.kernel_gradient_correction || turbulence) {
     auto fluid_only = [nf](std::size_t j) { return j < nf; };
@@ -375,13 +363,12 @@ void WcsphScheme::evaluate(const K& k, Particles& p, const FrameForce& frame) {
 #pragma omp parallel for schedule(static) reduction(max : nu_t_max)
     for (std::size_t i = 0; i < nf; ++i) {
       if (spec_.delta > 0.0)
-        d.density_gradient[i] = renormalised_gradient(k, p.position, p.density, d.volume, neighbours_, i, fluid_only).gradient;
-      const Mat2 L = spec_.kernel_gradient_correction ? kernel_correction_matrix(k, p.position, d.volume, neighbours_, i, all)
-                                                      : Mat2{};
+        d.density_gradient[i] = renormalised_gradient(d.pairs, p.density, d.volume, i, fluid_only).gradient;
+      const Mat2 L = spec_.kernel_gradient_correction ? kernel_correction_matrix(d.pairs, d.volume, i, all) : Mat2{};
       d.correction[i] = L;
       if (turbulence) {
         double nu_t = 0.0;
-        d.stress[i] = turbulent_stress(k, p, neighbours_, d.volume, L, i, model, nu_t);
+        d.stress[i] = sps_stress_of(corrected_velocity_gradient(p, d.pairs, d.volume, L, i), closure, nu_t);
         nu_t_max = std::max(nu_t_max, nu_t);
       }
     }
@@ -402,7 +389,7 @@ void WcsphScheme::evaluate(const K& k, Particles& p, const FrameForce& frame) {
   t.correct = spec_.kernel_gradient_correction;
   t.turbulence = turbulence;
   t.repulsive = spec_.walls == WallTreatment::repulsive;
-  rates(k, p, neighbours_, t, repulsive_, d);
+  rates(p, d.pairs, t, repulsive_, d);
 
   Vec2 wall;  // fixed-order sum: independent of the thread count
   for (std::size_t i = 0; i < nf; ++i) wall += d.wall_acceleration[i];
@@ -416,7 +403,7 @@ void WcsphScheme::initialise(Particles& p, const FrameForce& frame) {
   // The scene's (hydrostatic) pressures become densities: the state is then in discrete
   // balance up to the free-surface rows.
   for (std::size_t i = 0; i < p.n_fluid; ++i) p.density[i] = eos_density(p.pressure[i], rho0_, c0_);
-  with_kernel(kernel_type_, h_, [&](const auto& k) { evaluate(k, p, frame); });
+  evaluate(p, frame);
   steps_ = 0;
 }
 
@@ -434,8 +421,7 @@ void WcsphScheme::initialise(Particles& p, const FrameForce& frame) {
 //   r^{n+1} = r^{n+1/2} + dt/2 u^{n+1} + dt u_xsph^{n+1/2}
 // The wall force reported is that of the midpoint evaluation: the one that changed the
 // momentum over the step.
-template <class K>
-void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in) {
+void WcsphScheme::step_symplectic(Particles& p, const StepInput& in) {
   WcsphData& d = data_;
   const double dt = in.dt;
   const std::size_t nf = p.n_fluid;
@@ -451,7 +437,7 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
     p.velocity[i] = u + 0.5 * dt * a;
     p.density[i] = rho + 0.5 * dt * d.density_rate[i];
   }
-  evaluate(k, p, in.frame);
+  evaluate(p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
     const Vec2 a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
@@ -470,8 +456,7 @@ void WcsphScheme::step_symplectic(const K& k, Particles& p, const StepInput& in)
 //   u^{n+1} = u^{n+1/2} + dt/2 a^{n+1},  rho^{n+1} = rho^{n+1/2} + dt/2 D^{n+1}
 // The momentum change over the step is dt (F^n + F^{n+1}) / 2, so the wall force reported is
 // the mean of the wall forces of the two evaluations.
-template <class K>
-void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
+void WcsphScheme::step_leapfrog(Particles& p, const StepInput& in) {
   WcsphData& d = data_;
   const double dt = in.dt;
   const std::size_t nf = p.n_fluid;
@@ -488,7 +473,7 @@ void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
     p.density[i] = rho_half + 0.5 * dt * d.density_rate[i];
   }
   const Vec2 wall_before = last_wall_force_;
-  evaluate(k, p, in.frame);
+  evaluate(p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
     const Vec2 a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
@@ -500,17 +485,17 @@ void WcsphScheme::step_leapfrog(const K& k, Particles& p, const StepInput& in) {
 
 // Pressures of the new densities, the Shepard re-normalisation when due (Shao eqs. 10-11,
 // every shepard_interval steps), wall values at the new positions (for output), diagnostics.
-template <class K>
-void WcsphScheme::finish_step(const K& k, Particles& p, const FrameForce& frame) {
+void WcsphScheme::finish_step(Particles& p, const FrameForce& frame) {
   ++steps_;
   fluid_pressure(p);
+  build_pairs(p);  // the pairs at the new positions
   if (spec_.shepard_interval > 0 && steps_ % spec_.shepard_interval == 0) {
-    wall_values(k, p, frame);
-    shepard_density(k, p, neighbours_, data_.scratch);
+    wall_values(p, frame);
+    shepard_density(p, data_.pairs, data_.scratch);
     std::copy(data_.scratch.begin(), data_.scratch.begin() + static_cast<std::ptrdiff_t>(p.n_fluid), p.density.begin());
     fluid_pressure(p);
   }
-  wall_values(k, p, frame);
+  wall_values(p, frame);
   double vmax2 = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) vmax2 = std::max(vmax2, norm2(p.velocity[i]));
   diagnostics_.max_speed = std::sqrt(vmax2);
@@ -525,12 +510,10 @@ void WcsphScheme::step(Particles& p, const StepInput& in) {
   data_.resize_fluid(p.n_fluid);
   data_.extra_acceleration.clear();
   if (in.extra) in.extra(p, data_.extra_acceleration);  // screens: constant over the step
-  with_kernel(kernel_type_, h_, [&](const auto& k) {
-    if (!have_rates) evaluate(k, p, in.frame);  // first step without initialise(), or new particles
-    if (spec_.integrator == Integrator::leapfrog) step_leapfrog(k, p, in);
-    else step_symplectic(k, p, in);
-    finish_step(k, p, in.frame);
-  });
+  if (!have_rates) evaluate(p, in.frame);  // first step without initialise(), or new particles
+  if (spec_.integrator == Integrator::leapfrog) step_leapfrog(p, in);
+  else step_symplectic(p, in);
+  finish_step(p, in.frame);
 }
 
 double WcsphScheme::stable_dt(const Particles& p, const FrameForce& frame) const {

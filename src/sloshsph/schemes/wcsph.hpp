@@ -29,6 +29,7 @@
 #include "sloshsph/schemes/isph.hpp"  // SymTensor2, lattice_number_density
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
@@ -52,6 +53,7 @@ struct WcsphData {
   std::vector<SymTensor2> stress;      // turbulent stress R / rho (Shao eq. 21), m^2/s^2, fluid
   std::vector<Vec2> wall_acceleration; // part of du/dt due to wall particles (base shear), fluid
   std::vector<double> scratch;         // Shepard densities
+  PairList pairs;  // within the kernel's support at the positions of the current evaluation
 
   void resize_fluid(std::size_t n_fluid);
   void resize_all(std::size_t n);
@@ -93,11 +95,12 @@ class WcsphScheme {
   std::size_t memory_bytes() const;
 
  private:
-  template <class K> void step_symplectic(const K& k, Particles& p, const StepInput& in);
-  template <class K> void step_leapfrog(const K& k, Particles& p, const StepInput& in);
-  template <class K> void evaluate(const K& k, Particles& p, const FrameForce& frame);
-  template <class K> void wall_values(const K& k, Particles& p, const FrameForce& frame);
-  template <class K> void finish_step(const K& k, Particles& p, const FrameForce& frame);
+  void build_pairs(const Particles& p);
+  void step_symplectic(Particles& p, const StepInput& in);
+  void step_leapfrog(Particles& p, const StepInput& in);
+  void evaluate(Particles& p, const FrameForce& frame);
+  void wall_values(Particles& p, const FrameForce& frame);
+  void finish_step(Particles& p, const FrameForce& frame);
   void update_neighbours(Particles& p, double dt, const FrameForce& frame);
   bool sync_state(const Particles& p);
   void fluid_pressure(Particles& p) const;

@@ -2,6 +2,7 @@
 // 2D smoothing kernels with compact support 2h.
 // Each kernel offers w(r), and gradient_factor(r) = (dW/dr) / r, so that
 // grad_i W_ij = gradient_factor(r_ij) * (r_i - r_j): no division by r, safe at r = 0.
+#include <algorithm>
 #include <numbers>
 
 #include "sloshsph/core/case_spec.hpp"
@@ -36,6 +37,16 @@ struct WendlandC2 {
     const double a = 1.0 - 0.5 * q;
     return -5.0 * norm * a * a * a * inv_h * inv_h;
   }
+
+  // w(r) and gradient_factor(r) together and without a branch (the pair layer's one evaluation
+  // per pair): the same values for q < 2, and 0 beyond (the gradient factor -0 there).
+  void w_and_gradient(double r, double& w_out, double& f_out) const {
+    const double q = r * inv_h;
+    const double a = std::max(1.0 - 0.5 * q, 0.0);
+    const double a2 = a * a;
+    w_out = norm * (1.0 + 2.0 * q) * a2 * a2;
+    f_out = -5.0 * norm * a * a * a * inv_h * inv_h;
+  }
 };
 
 // Cubic B-spline (Monaghan & Lattanzio 1985), 2D normalisation 10 / (7 pi h^2).
@@ -65,6 +76,11 @@ struct CubicSpline {
     if (r <= 0.0) return 0.0;
     const double a = 2.0 - q;
     return norm * (-0.75 * a * a) * inv_h / r;
+  }
+
+  void w_and_gradient(double r, double& w_out, double& f_out) const {
+    w_out = w(r);
+    f_out = gradient_factor(r);
   }
 };
 

@@ -76,6 +76,9 @@ class NeighbourList {
   const std::uint32_t* begin(std::size_t i) const { return index_.data() + offset_[i]; }
   const std::uint32_t* end(std::size_t i) const { return index_.data() + offset_[i + 1]; }
   std::size_t count(std::size_t i) const { return offset_[i + 1] - offset_[i]; }
+  // Row i's entries are index slots [offset(i), offset(i + 1)).
+  std::size_t offset(std::size_t i) const { return offset_[i]; }
+  std::size_t rows() const { return offset_.empty() ? 0 : offset_.size() - 1; }
   std::size_t total_pairs() const { return index_.size(); }
   double search_radius() const { return support_ + skin_; }
   double skin() const { return skin_; }

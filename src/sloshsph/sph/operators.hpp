@@ -1,13 +1,14 @@
 #pragma once
-// Discrete SPH operators of thesis section 2.2.3, for one particle i over its neighbour
-// row. The schemes fuse these sums into their sweeps through the same pair weights
-// (laplacian_weight, gradient_factor), and the unit tests check them on lattices.
-// Every particle has the same volume V = dp^2 (and mass rho0 V); grad_i W_ij = F(r) r_ij.
+// Discrete SPH operators of thesis section 2.2.3, for one particle i over its pairs (the pair
+// layer, sph/pairs.hpp). The schemes build their sweeps from the same pair terms
+// (laplacian_weight, divergence_term, velocity_gradient), so the lattice tests of these sums
+// check the arithmetic the solver runs. Every particle has the same volume V = dp^2 (and mass
+// rho0 V); grad_i W_ij = F(r) r_ij.
 #include <cmath>
 #include <vector>
 
 #include "sloshsph/core/vec2.hpp"
-#include "sloshsph/sph/neighbours.hpp"
+#include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
@@ -15,67 +16,73 @@ namespace sloshsph {
 // rho_i = rho_j:  lap(f)_i = sum_j lambda_ij (f_i - f_j),  lambda_ij = 2 V F_ij r^2 / (r^2 + eta^2).
 // (The extracted eq. 2.5 prints (rho_i^2 + rho_j^2) where eqs. 2.16, 3.4 and 4.11 have
 // (rho_i + rho_j)^2; only the latter gives lap(x^2) = 2.)
+// eta^2 keeps the weight finite as r -> 0 and follows each scheme's source: the thesis's ISPH
+// takes eta = 0.01 h (2.2.3, eta^2 = 1e-4 h^2), Shao et al. (2012) eq. 6 for the WCSPH scheme
+// 0.01 h^2 (after Morris et al. 1997). Both are far below dp^2 at h/dp >= 1.2, where the pairs
+// are, so the two choices differ by < 1% in the weight of the closest pair.
 inline double laplacian_weight(double volume, double gradient_factor, double r2, double eta2) {
   return 2.0 * volume * gradient_factor * r2 / (r2 + eta2);
 }
 
+// V (u_j - u_i) . grad_i W_ij: pair term of div(u)_i (du = u_j - u_i).
+inline double divergence_term(double volume, const Pair& q, Vec2 du) { return volume * q.f * dot(du, q.rij); }
+
+// grad(u)_i = sum_j V (u_j - u_i) (x) grad_i W_ij, the velocity gradient of the turbulence closures.
+struct VelocityGradient {
+  double dudx = 0.0, dudy = 0.0, dvdx = 0.0, dvdy = 0.0;
+};
+
+inline VelocityGradient velocity_gradient(const PairList& pairs, const std::vector<Vec2>& u, double volume,
+                                          std::size_t i) {
+  const Vec2 ui = u[i];
+  VelocityGradient g;
+  pairs.for_each(i, [&](const Pair& q) {
+    if (q.f == 0.0) return;
+    const Vec2 du = (u[q.j] - ui) * (volume * q.f);
+    g.dudx += du.x * q.rij.x;
+    g.dudy += du.x * q.rij.y;
+    g.dvdx += du.y * q.rij.x;
+    g.dvdy += du.y * q.rij.y;
+  });
+  return g;
+}
+
 // grad(f)_i = sum_j V (f_j - f_i) grad_i W_ij: exact for linear f up to the kernel's
 // lattice moment (within 1% at h = 1.4 dp).
-template <class K>
-Vec2 gradient_difference(const K& k, const std::vector<Vec2>& x, const std::vector<double>& f, double volume,
-                         const NeighbourList& nl, std::size_t i) {
+inline Vec2 gradient_difference(const PairList& pairs, const std::vector<double>& f, double volume, std::size_t i) {
   Vec2 g;
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const Vec2 rij = x[i] - x[*it];
-    g += rij * (volume * (f[*it] - f[i]) * k.gradient_factor(norm(rij)));
-  }
+  pairs.for_each(i, [&](const Pair& q) { g += q.rij * (volume * (f[q.j] - f[i]) * q.f); });
   return g;
 }
 
 // Thesis eq. 2.4 with rho_i = rho_j: grad(f)_i = sum_j V (f_i + f_j) grad_i W_ij. Conserves
 // momentum (antisymmetric in i, j); equal to gradient_difference plus 2 f_i sum_j V grad_i W_ij,
 // which vanishes for a full, symmetric neighbourhood.
-template <class K>
-Vec2 gradient_symmetric(const K& k, const std::vector<Vec2>& x, const std::vector<double>& f, double volume,
-                        const NeighbourList& nl, std::size_t i) {
+inline Vec2 gradient_symmetric(const PairList& pairs, const std::vector<double>& f, double volume, std::size_t i) {
   Vec2 g;
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const Vec2 rij = x[i] - x[*it];
-    g += rij * (volume * (f[*it] + f[i]) * k.gradient_factor(norm(rij)));
-  }
+  pairs.for_each(i, [&](const Pair& q) { g += q.rij * (volume * (f[q.j] + f[i]) * q.f); });
   return g;
 }
 
 // div(u)_i = sum_j V (u_j - u_i) . grad_i W_ij.
-template <class K>
-double divergence(const K& k, const std::vector<Vec2>& x, const std::vector<Vec2>& u, double volume,
-                  const NeighbourList& nl, std::size_t i) {
+inline double divergence(const PairList& pairs, const std::vector<Vec2>& u, double volume, std::size_t i) {
   double d = 0.0;
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const Vec2 rij = x[i] - x[*it];
-    d += volume * k.gradient_factor(norm(rij)) * dot(u[*it] - u[i], rij);
-  }
+  pairs.for_each(i, [&](const Pair& q) { d += divergence_term(volume, q, u[q.j] - u[i]); });
   return d;
 }
 
 // lap(f)_i = sum_j lambda_ij (f_i - f_j) (thesis eq. 2.5).
-template <class K>
-double laplacian(const K& k, const std::vector<Vec2>& x, const std::vector<double>& f, double volume, double eta2,
-                 const NeighbourList& nl, std::size_t i) {
+inline double laplacian(const PairList& pairs, const std::vector<double>& f, double volume, double eta2,
+                        std::size_t i) {
   double l = 0.0;
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) {
-    const Vec2 rij = x[i] - x[*it];
-    const double r2 = norm2(rij);
-    l += laplacian_weight(volume, k.gradient_factor(std::sqrt(r2)), r2, eta2) * (f[i] - f[*it]);
-  }
+  pairs.for_each(i, [&](const Pair& q) { l += laplacian_weight(volume, q.f, q.r2(), eta2) * (f[i] - f[q.j]); });
   return l;
 }
 
 // Kernel sum sum_j V W_ij including the particle itself (thesis eq. 2.2 with f = 1).
-template <class K>
-double kernel_sum(const K& k, const std::vector<Vec2>& x, double volume, const NeighbourList& nl, std::size_t i) {
-  double s = k.w(0.0);
-  for (auto it = nl.begin(i); it != nl.end(i); ++it) s += k.w(norm(x[i] - x[*it]));
+inline double kernel_sum(const PairList& pairs, double volume, std::size_t i) {
+  double s = pairs.self_w();
+  pairs.for_each(i, [&](const Pair& q) { s += q.w; });
   return volume * s;
 }
 

@@ -30,6 +30,12 @@ struct Cloud {
     volume.assign(x.size(), kDp * kDp);
     nl.build(x, x.size());
   }
+  template <class K>
+  PairList pairs(const K& k) const {
+    PairList list;
+    list.build(k, x, nl);
+    return list;
+  }
 };
 
 // Reference: grad(3x - 2y + 1) = (3, -2) exactly (the correction makes the discrete gradient
@@ -44,10 +50,11 @@ TEST(KernelCorrection, LinearFieldExactOnDisorderedParticles) {
   c.finish();
   const WendlandC2 k(kH);
   auto all = [](std::size_t) { return true; };
+  const PairList pairs = c.pairs(k);
   double worst_corrected = 0.0, worst_plain = 0.0;
   std::size_t corrected = 0;
   for (std::size_t i = 0; i < c.x.size(); ++i) {
-    const RenormalisedGradient g = renormalised_gradient(k, c.x, c.f, c.volume, c.nl, i, all);
+    const RenormalisedGradient g = renormalised_gradient(pairs, c.f, c.volume, i, all);
     if (!g.corrected) continue;  // only the most isolated corner particles, if any
     ++corrected;
     worst_corrected = std::max(worst_corrected, relative_error(g.gradient));
@@ -77,13 +84,14 @@ TEST(KernelCorrection, LinearFieldExactOnTruncatedBoundary) {
   c.finish();
   const CubicSpline k(kH);  // the other kernel, for coverage
   auto all = [](std::size_t) { return true; };
+  const PairList pairs = c.pairs(k);
   double worst = 0.0;
   std::size_t on_cut = 0;
   for (std::size_t i = 0; i < c.x.size(); ++i) {
     const Vec2 p = c.x[i];
     // On the cut, away from the lattice's other edges (x <= 0.2, y >= 0) by the support.
     if (std::abs(p.x - p.y) > 1e-12 || p.y < 3.0 * kDp || p.x > 0.2 - 3.0 * kDp) continue;
-    const RenormalisedGradient g = renormalised_gradient(k, c.x, c.f, c.volume, c.nl, i, all);
+    const RenormalisedGradient g = renormalised_gradient(pairs, c.f, c.volume, i, all);
     EXPECT_TRUE(g.corrected);
     worst = std::max(worst, relative_error(g.gradient));
     ++on_cut;
@@ -100,7 +108,7 @@ TEST(KernelCorrection, SingularMomentMatrixFallsBackToNoCorrection) {
   for (int a = 0; a < 5; ++a) c.x.push_back({a * kDp, 0.0});
   c.finish();
   const WendlandC2 k(kH);
-  const RenormalisedGradient g = renormalised_gradient(k, c.x, c.f, c.volume, c.nl, 2, [](std::size_t) { return true; });
+  const RenormalisedGradient g = renormalised_gradient(c.pairs(k), c.f, c.volume, 2, [](std::size_t) { return true; });
   EXPECT_FALSE(g.corrected);
   EXPECT_EQ(g.correction.xx, 1.0);
   EXPECT_EQ(g.correction.xy, 0.0);
@@ -116,7 +124,7 @@ TEST(KernelCorrection, NearIdentityInLatticeBulk) {
     for (int b = 0; b < 11; ++b) c.x.push_back({a * kDp, b * kDp});
   c.finish();
   const WendlandC2 k(kH);
-  const Mat2 L = kernel_correction_matrix(k, c.x, c.volume, c.nl, 60, [](std::size_t) { return true; });
+  const Mat2 L = kernel_correction_matrix(c.pairs(k), c.volume, 60, [](std::size_t) { return true; });
   EXPECT_NEAR(L.xx, 1.0, 0.02);
   EXPECT_NEAR(L.yy, 1.0, 0.02);
   EXPECT_NEAR(L.xy, 0.0, 1e-12);

@@ -48,8 +48,10 @@ TEST(ShepardDensity, ConstantFieldIsReproduced) {
   for (double& r : p.density) r = rho;
   NeighbourList nl(2.0 * kH, 0.0);
   nl.build(p.position, p.n_fluid);
+  PairList pairs;
+  pairs.build(WendlandC2(kH), p.position, nl);
   std::vector<double> out(p.n_fluid);
-  shepard_density(WendlandC2(kH), p, nl, out);
+  shepard_density(p, pairs, out);
   double worst = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) worst = std::max(worst, std::abs(out[i] / rho - 1.0));
   EXPECT_LT(worst, 1e-12);
@@ -82,13 +84,15 @@ TEST(ShepardDensity, BoundsParticleScaleDriftGrowingLinearlyInTime) {
     den += W;
   }
   const double r = num / den;
+  PairList pairs;  // the particles do not move: the pairs stay
+  pairs.build(k, p.position, nl);
   const double kappa = 1.0, dt = 1e-4, uniform_rate = 0.5;  // kg/m^3/s
   const int interval = 10, filters = 8;
   std::vector<double> out(p.n_fluid);
   for (int f = 0; f < filters; ++f) {
     for (int step = 0; step < interval; ++step)
       for (std::size_t i = 0; i < p.n_fluid; ++i) p.density[i] += (kappa * sign[i] + uniform_rate) * dt;
-    shepard_density(k, p, nl, out);
+    shepard_density(p, pairs, out);
     std::copy(out.begin(), out.end(), p.density.begin());
   }
   const double elapsed = filters * interval * dt;
@@ -117,7 +121,9 @@ TEST(ShepardDensity, WallValuesAreShepardAveragesOfTheFluid) {
   }
   NeighbourList nl(2.0 * kH, 0.0);
   nl.build(p.position, p.n_fluid);
-  shepard_wall_values(WendlandC2(kH), p, nl, kRho0);
+  PairList pairs;
+  pairs.build(WendlandC2(kH), p.position, nl);
+  shepard_wall_values(p, pairs, kRho0);
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
     if (nl.count(w) == 0) {
       EXPECT_EQ(p.density[w], kRho0);

@@ -1,0 +1,32 @@
+#pragma once
+// The sub-particle-scale (SPS) turbulence closure shared by both schemes: from the velocity
+// gradient to the turbulent stress tau / rho.
+//   S = (grad u + grad u^T) / 2,  |S| = sqrt(2 S:S),  nu_t = l^2 |S|            (Smagorinsky)
+//   k_t = (nu_t / (Ct dp))^2,  tau / rho = 2 nu_t S - 2/3 k_t I
+// ISPH: thesis eqs. 2.8-2.9 with l = Cs dp. WCSPH: Shao et al. (2012) eqs. 21-23 with l = Cs h and
+// no k_t ("smagorinsky"), or the thesis's SPS closure ("sps").
+#include <cmath>
+
+#include "sloshsph/sph/operators.hpp"
+
+namespace sloshsph {
+
+struct SymTensor2 {
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+};
+
+struct SpsClosure {
+  double mixing_length2 = 0.0;  // l^2, m^2
+  double ct_dp = 0.0;           // Ct dp, m; 0: no turbulent kinetic energy term
+};
+
+// tau / rho of one particle (m^2/s^2); its eddy viscosity nu_t (m^2/s) in `nu_t`.
+inline SymTensor2 sps_stress_of(const VelocityGradient& g, const SpsClosure& c, double& nu_t) {
+  const double sxy = 0.5 * (g.dudy + g.dvdx);
+  const double s_mag = std::sqrt(2.0 * (g.dudx * g.dudx + g.dvdy * g.dvdy + 2.0 * sxy * sxy));
+  nu_t = c.mixing_length2 * s_mag;
+  const double kt = c.ct_dp > 0.0 ? (nu_t / c.ct_dp) * (nu_t / c.ct_dp) : 0.0;
+  return {2.0 * nu_t * g.dudx - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * g.dvdy - 2.0 / 3.0 * kt};
+}
+
+}  // namespace sloshsph
