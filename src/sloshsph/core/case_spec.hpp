@@ -58,10 +58,20 @@ inline double fill_speed_scale(const FillSpec& f, double gravity) {
 
 enum class KernelType { wendland_c2, cubic_spline };
 
+// The dummy wall layers that fill the kernel of a fluid particle at rest dp/2 from a wall: the
+// layers stand (k - 1/2) dp behind the wall surface, k = 1, 2, ..., and layer k is within the
+// support 2h of that particle when k dp < 2h, so n = ceil(2 h/dp) - 1 layers are needed
+// (2 up to h = 1.5 dp, 3 up to 2 dp, 4 up to 2.5 dp). With fewer, the fluid finds a hole in its
+// kernel behind the wall: at h = 1.8 dp with 2 layers it came within dp/4 of the walls and the
+// wall-contact step acted every step (docs/validation/notes.md).
+inline int wall_layers_needed(double kernel_ratio) {
+  return static_cast<int>(std::ceil(2.0 * kernel_ratio - 1e-9)) - 1;
+}
+
 struct ParticleSpec {
   double dp = 0.0;             // m, initial particle spacing
   double kernel_ratio = 1.4;   // h / dp
-  int wall_layers = 2;         // layers of dummy wall particles
+  int wall_layers = 2;         // layers of dummy wall particles (default: wall_layers_needed, at least 2)
   KernelType kernel = KernelType::wendland_c2;
 };
 

@@ -1,6 +1,7 @@
 #include "sloshsph/io/case_reader.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -80,7 +81,17 @@ ParticleSpec read_particles(TableReader& r) {
   ParticleSpec p;
   p.dp = r.positive("dp");
   p.kernel_ratio = r.in_range("kernel_ratio", p.kernel_ratio, 1.0, 2.5);
-  p.wall_layers = static_cast<int>(r.integer("wall_layers", p.wall_layers, 1, 8));
+  // The walls must fill the kernel of a particle at rest dp/2 from them (core/case_spec.hpp).
+  const int needed = wall_layers_needed(p.kernel_ratio);
+  p.wall_layers = static_cast<int>(r.integer("wall_layers", std::max(2, needed), 1, 8));
+  if (p.wall_layers < needed) {
+    char what[240];
+    std::snprintf(what, sizeof what,
+                  "is %d, but at kernel_ratio = %g the kernel of a particle dp/2 from a wall reaches %d layers into it; "
+                  "set wall_layers = %d or more (or leave it out: its default follows kernel_ratio)",
+                  p.wall_layers, p.kernel_ratio, needed, needed);
+    r.fail("wall_layers", what);
+  }
   p.kernel = r.choice("kernel", "wendland", {"wendland", "cubic_spline"}) == "cubic_spline" ? KernelType::cubic_spline
                                                                                                : KernelType::wendland_c2;
   r.finish();

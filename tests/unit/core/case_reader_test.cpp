@@ -41,6 +41,29 @@ void expect_error(const std::string& text, const std::vector<std::string>& sets,
   }
 }
 
+// Reference: dummy layers stand (k - 1/2) dp behind the wall and reach a particle dp/2 in front
+// of it when k dp < 2h, so ceil(2h/dp) - 1 layers are needed: 1 at h = dp, 2 at 1.4 and 1.5 dp,
+// 3 at 1.8 and 2.0 dp, 4 at 2.5 dp (exact integers, no tolerance).
+TEST(CaseReader, WallLayersFollowTheKernelRatio) {
+  EXPECT_EQ(wall_layers_needed(1.0), 1);
+  EXPECT_EQ(wall_layers_needed(1.4), 2);
+  EXPECT_EQ(wall_layers_needed(1.5), 2);
+  EXPECT_EQ(wall_layers_needed(1.6), 3);
+  EXPECT_EQ(wall_layers_needed(1.8), 3);
+  EXPECT_EQ(wall_layers_needed(2.0), 3);
+  EXPECT_EQ(wall_layers_needed(2.5), 4);
+  // The default: the layers needed, never fewer than 2.
+  EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"particles.kernel_ratio=1.2"}).particles.wall_layers, 2);
+  EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"particles.kernel_ratio=1.8"}).particles.wall_layers, 3);
+  EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"particles.kernel_ratio=2.5"}).particles.wall_layers, 4);
+  // More than needed is the user's choice; fewer is refused, naming the key.
+  EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"particles.kernel_ratio=1.4", "particles.wall_layers=4"})
+                .particles.wall_layers,
+            4);
+  expect_error(kMinimal, {"particles.kernel_ratio=1.8", "particles.wall_layers=2"}, "particles.wall_layers",
+               "reaches 3 layers");
+}
+
 TEST(CaseReader, MinimalCaseHasTheDocumentedDefaults) {
   const CaseSpec s = read_case_text(kMinimal, "case.toml");
   EXPECT_DOUBLE_EQ(s.fluid.density, 1000.0);
