@@ -118,49 +118,81 @@ BaseMotion Simulation::tank_motion() const {
   return m;
 }
 
+void Simulation::add_column(std::string name, std::string unit,
+                            std::function<double(const Simulation&, const SampleBasis&)> value) {
+  columns_.push_back({std::move(name), std::move(unit), std::move(value)});
+}
+
+// The columns of timeseries.csv, each with its value (docs/case-format.md, "Output"). Forces are
+// means over the interval since the last sample; W_base is the base's work on the fluid since t = 0.
 void Simulation::build_columns() {
-  columns_ = {{"time", "s"}, {"x_base", "m"}, {"v_base", "m/s"}, {"a_base", "m/s^2"}};
-  for (const auto& g : spec_.gauges) columns_.push_back({"eta:" + g.name, "m"});
-  for (const auto& p : spec_.pressure_probes) columns_.push_back({"p:" + p.name, "Pa"});
-  for (const auto& f : spec_.fronts) columns_.push_back({"front:" + f.name, "m"});
-  for (const auto& e : screens_.elements) {
-    if (e.count == 0) continue;  // explicit slats are walls: their force is in F_w
-    columns_.push_back({"F_screen:" + e.name, "N/m"});
-    columns_.push_back({"F_screen_y:" + e.name, "N/m"});
+  using S = const Simulation&;
+  using B = const SampleBasis&;
+  columns_.clear();
+  add_column("time", "s", [](S s, B) { return s.time_; });
+  add_column("x_base", "m", [](S, B b) { return b.motion.displacement.x; });
+  add_column("v_base", "m/s", [](S, B b) { return b.motion.velocity.x; });
+  add_column("a_base", "m/s^2", [](S, B b) { return b.motion.acceleration.x; });
+  for (std::size_t k = 0; k < spec_.gauges.size(); ++k)
+    add_column("eta:" + spec_.gauges[k].name, "m", [k](S s, B) { return s.surface_height(k) - s.gauge_datum_[k]; });
+  for (std::size_t k = 0; k < spec_.pressure_probes.size(); ++k)
+    add_column("p:" + spec_.pressure_probes[k].name, "Pa", [k](S s, B) { return s.probe_values_[k]; });
+  for (std::size_t k = 0; k < spec_.fronts.size(); ++k)
+    add_column("front:" + spec_.fronts[k].name, "m", [k](S s, B) {
+      const FrontProbeSpec& f = s.spec_.fronts[k];
+      const double dp = s.spec_.particles.dp;
+      return front_position(s.scene_.particles, s.scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp, f.rightward, dp);
+    });
+  for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
+    if (screens_.elements[e].count == 0) continue;  // explicit slats are walls: their force is in F_w
+    auto mean_force = [e](S s) { return s.acc_dt_ > 0.0 ? s.acc_screen_force_[e] / s.acc_dt_ : Vec2{}; };
+    add_column("F_screen:" + screens_.elements[e].name, "N/m", [mean_force](S s, B) { return mean_force(s).x; });
+    add_column("F_screen_y:" + screens_.elements[e].name, "N/m", [mean_force](S s, B) { return mean_force(s).y; });
   }
-  columns_.insert(columns_.end(), {{"F_w", "N/m"},
-                                   {"F_sw", "N/m"},
-                                   {"F_wy", "N/m"},
-                                   {"W_base", "J/m"},
-                                   {"fluid_mass", "kg/m"},
-                                   {"E_kin", "J/m"},
-                                   {"E_pot", "J/m"},
-                                   {"leaked", "1"},
-                                   {"max_speed", "m/s"},
-                                   {"dt", "s"},
-                                   {"ppe_iterations", "1"},
-                                   {"wall_contacts", "1"}});
-  for (const auto& pl : plates_) {
-    const std::string& n = pl.spec().name;
-    columns_.insert(columns_.end(), {{"plate_dx:" + n, "m"},
-                                     {"plate_dy:" + n, "m"},
-                                     {"plate_mid_dx:" + n, "m"},
-                                     {"plate_mid_dy:" + n, "m"},
-                                     {"F_plate_x:" + n, "N/m"},
-                                     {"F_plate_y:" + n, "N/m"},
-                                     {"E_plate:" + n, "J/m"},
-                                     {"plate_inside:" + n, "1"},
-                                     {"plate_contacts:" + n, "1"},
-                                     {"plate_crossings:" + n, "1"}});
+  add_column("F_w", "N/m", [](S, B b) { return b.wall_force.x; });
+  add_column("F_sw", "N/m", [](S, B b) { return b.wall_force.x - b.fluid_mass * b.base_acceleration; });
+  add_column("F_wy", "N/m", [](S, B b) { return b.wall_force.y; });
+  add_column("W_base", "J/m", [](S s, B) { return s.work_on_fluid_; });
+  add_column("fluid_mass", "kg/m", [](S, B b) { return b.fluid_mass; });
+  add_column("E_kin", "J/m", [](S, B b) { return b.kinetic_energy; });
+  add_column("E_pot", "J/m", [](S, B b) { return b.potential_energy; });
+  add_column("leaked", "1", [](S s, B) { return static_cast<double>(s.leaks_.size()); });
+  add_column("max_speed", "m/s", [](S s, B) { return s.max_speed_; });
+  add_column("dt", "s", [](S s, B) { return s.last_dt_; });
+  add_column("ppe_iterations", "1", [](S s, B) { return static_cast<double>(s.scheme_.diagnostics().solver_iterations); });
+  add_column("wall_contacts", "1", [](S s, B) { return static_cast<double>(s.wall_contacts_); });
+  for (std::size_t k = 0; k < plates_.size(); ++k) {
+    const std::string& n = plates_[k].spec().name;
+    auto force = [k](S s) { return s.acc_dt_ > 0.0 ? s.acc_plate_force_[k] / s.acc_dt_ : s.plates_[k].last_force(); };
+    add_column("plate_dx:" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().x; });
+    add_column("plate_dy:" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().y; });
+    add_column("plate_mid_dx:" + n, "m", [k](S s, B) { return s.plates_[k].displacement_at(0.5).x; });
+    add_column("plate_mid_dy:" + n, "m", [k](S s, B) { return s.plates_[k].displacement_at(0.5).y; });
+    add_column("F_plate_x:" + n, "N/m", [force](S s, B) { return force(s).x; });
+    add_column("F_plate_y:" + n, "N/m", [force](S s, B) { return force(s).y; });
+    add_column("E_plate:" + n, "J/m", [k](S s, B) { return s.plates_[k].strain_energy() + s.plates_[k].kinetic_energy(); });
+    add_column("plate_inside:" + n, "1", [k](S s, B) { return s.plate_inside_[k]; });
+    add_column("plate_contacts:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].contacts()); });
+    add_column("plate_crossings:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].crossings()); });
   }
-  if (structure_)
-    columns_.insert(columns_.end(), {{"x_s", "m"},
-                                     {"v_s", "m/s"},
-                                     {"a_s", "m/s^2"},
-                                     {"F_TLD", "N"},
-                                     {"F_e", "N"},
-                                     {"E_s", "J"},
-                                     {"E_TLD", "J"}});
+  if (!structure_) return;
+  // [structure] (docs/case-format.md). The energies are relative to the ground (absolute without
+  // ground motion): E_s = (M v^2 + K x^2)/2 of the structure alone; E_TLD = n b [sum m (u + v_s)^2 / 2
+  // + m g y] + n b m_r v_s^2 / 2, the liquid of all tanks with the tank frame's velocity u turned
+  // into the ground frame. With no damping, no load and no ground motion E_s + E_TLD is conserved
+  // but for the fluid's own dissipation.
+  add_column("x_s", "m", [](S s, B) { return s.structure_->displacement(); });
+  add_column("v_s", "m/s", [](S s, B) { return s.structure_->velocity(); });
+  add_column("a_s", "m/s^2", [](S s, B) { return s.structure_->absolute_acceleration(); });
+  add_column("F_TLD", "N", [](S s, B) { return s.acc_dt_ > 0.0 ? s.acc_tld_force_ / s.acc_dt_ : 0.0; });
+  add_column("F_e", "N", [](S s, B) { return s.structure_->external_force(); });
+  add_column("E_s", "J", [](S s, B) { return s.structure_->structure_energy(); });
+  add_column("E_TLD", "J", [](S s, B b) {
+    const StructureCoupling& st = *s.structure_;
+    const double vs = st.velocity(), nb = st.tank_factor();
+    const double liquid = b.kinetic_energy + vs * b.momentum_x + 0.5 * s.fluid_mass() * vs * vs + b.potential_energy;
+    return nb * (liquid + 0.5 * st.spec().rigid_mass * vs * vs);
+  });
 }
 
 // time.settle: before t = 0 the fluid settles under gravity alone (no excitation) while its
@@ -387,77 +419,51 @@ double Simulation::probe_pressure(std::size_t probe) const {
   });
 }
 
+SampleBasis Simulation::sample_basis() const {
+  const Particles& p = scene_.particles;
+  SampleBasis b;
+  b.motion = tank_motion();
+  b.fluid_mass = fluid_mass();
+  if (acc_dt_ > 0.0) {
+    b.wall_force = acc_wall_force_ / acc_dt_;
+    b.base_acceleration = acc_base_acceleration_ / acc_dt_;
+  }
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    b.kinetic_energy += 0.5 * p.mass * norm2(p.velocity[i]);
+    b.potential_energy += p.mass * spec_.fluid.gravity * (p.position[i].y - scene_.tank->y_bottom);
+    b.momentum_x += p.mass * p.velocity[i].x;
+  }
+  return b;
+}
+
+void Simulation::reset_interval_sums() {
+  acc_dt_ = 0.0;
+  acc_wall_force_ = {};
+  acc_base_acceleration_ = 0.0;
+  acc_tld_force_ = 0.0;
+  for (Vec2& f : acc_screen_force_) f = {};
+  for (Vec2& f : acc_plate_force_) f = {};
+}
+
 std::vector<double> Simulation::sample() {
   const Particles& p = scene_.particles;
-  const BaseMotion m = tank_motion();
-  std::vector<double> v = {time_, m.displacement.x, m.velocity.x, m.acceleration.x};
-  for (std::size_t k = 0; k < spec_.gauges.size(); ++k) v.push_back(surface_height(k) - gauge_datum_[k]);
+  probe_values_.clear();
   if (!spec_.pressure_probes.empty()) {
     CellGrid grid;
     grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
     with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
       for (const auto& probe : spec_.pressure_probes)
-        v.push_back(read_pressure_probe(k, p, grid, probe, spec_.particles.dp));
+        probe_values_.push_back(read_pressure_probe(k, p, grid, probe, spec_.particles.dp));
     });
   }
-  for (const auto& f : spec_.fronts) {
-    const double dp = spec_.particles.dp;
-    v.push_back(front_position(p, scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp, f.rightward, dp));
-  }
-  for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
-    if (screens_.elements[e].count == 0) continue;
-    const Vec2 f = acc_dt_ > 0.0 ? acc_screen_force_[e] / acc_dt_ : Vec2{};
-    v.push_back(f.x);
-    v.push_back(f.y);
-    acc_screen_force_[e] = {};
-  }
-  const double mass = fluid_mass();
-  Vec2 f_w;
-  double a_mean = 0.0;
-  if (acc_dt_ > 0.0) {
-    f_w = acc_wall_force_ / acc_dt_;
-    a_mean = acc_base_acceleration_ / acc_dt_;
-  }
-  double e_kin = 0.0, e_pot = 0.0, momentum_x = 0.0;
-  for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    e_kin += 0.5 * p.mass * norm2(p.velocity[i]);
-    e_pot += p.mass * spec_.fluid.gravity * (p.position[i].y - scene_.tank->y_bottom);
-    momentum_x += p.mass * p.velocity[i].x;
-  }
-  v.insert(v.end(), {f_w.x, f_w.x - mass * a_mean, f_w.y, work_on_fluid_, mass, e_kin, e_pot,
-                     static_cast<double>(leaks_.size()), max_speed_, last_dt_,
-                     static_cast<double>(scheme_.diagnostics().solver_iterations),
-                     static_cast<double>(wall_contacts_)});
-  for (std::size_t k = 0; k < plates_.size(); ++k) {
-    PlateCoupling& pl = plates_[k];
-    const Vec2 tip = pl.tip_displacement(), mid = pl.displacement_at(0.5);
-    const Vec2 f = acc_dt_ > 0.0 ? acc_plate_force_[k] / acc_dt_ : pl.last_force();
-    v.insert(v.end(), {tip.x, tip.y, mid.x, mid.y, f.x, f.y, pl.strain_energy() + pl.kinetic_energy(),
-                       static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())),
-                       static_cast<double>(pl.contacts()),
-                       static_cast<double>(pl.crossings())});
-    acc_plate_force_[k] = {};
-  }
-  if (structure_) append_structure_values(v, e_kin, momentum_x, e_pot);
-  acc_dt_ = 0.0;
-  acc_wall_force_ = {};
-  acc_base_acceleration_ = 0.0;
-  acc_tld_force_ = 0.0;
-  return v;
-}
-
-// x_s, v_s, a_s, F_TLD, F_e, E_s, E_TLD (docs/case-format.md, [structure]). The energies are
-// relative to the ground (absolute without ground motion): E_s = (M v^2 + K x^2)/2 of the
-// structure alone; E_TLD = n b [sum m (u + v_s)^2 / 2 + m g y] + n b m_r v_s^2 / 2, the liquid
-// of all tanks with the tank frame's velocity u turned into the ground frame. With no damping,
-// no load and no ground motion E_s + E_TLD is conserved but for the fluid's own dissipation.
-void Simulation::append_structure_values(std::vector<double>& v, double e_kin, double momentum_x, double e_pot) {
-  const StructureCoupling& s = *structure_;
-  const double vs = s.velocity(), nb = s.tank_factor();
-  const double liquid = e_kin + vs * momentum_x + 0.5 * fluid_mass() * vs * vs + e_pot;
-  const double f_tld = acc_dt_ > 0.0 ? acc_tld_force_ / acc_dt_ : 0.0;
-  v.insert(v.end(), {s.displacement(), vs, s.absolute_acceleration(), f_tld, s.external_force(), s.structure_energy(),
-                     nb * (liquid + 0.5 * s.spec().rigid_mass * vs * vs)});
+  plate_inside_.clear();
+  for (PlateCoupling& pl : plates_) plate_inside_.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
+  const SampleBasis basis = sample_basis();
+  std::vector<double> values;
+  values.reserve(columns_.size());
+  for (const Column& c : columns_) values.push_back(c.value(*this, basis));
+  reset_interval_sums();
+  return values;
 }
 
 void save_particles(StateWriter& w, const Particles& p) {

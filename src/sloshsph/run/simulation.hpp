@@ -1,6 +1,7 @@
 #pragma once
 // One simulation in memory: scene, scheme, excitation and observers, advanced step by
 // step. The command line (run_case) and the tests drive it the same way.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,9 +31,24 @@ double first_sloshing_omega(const CaseSpec& spec);
 // excitation.beta_reference = "thesis".
 double reference_omega(const CaseSpec& spec);
 
+class Simulation;
+
+// What one sample works out once for all its columns: the tank's motion, the means over the
+// interval since the last sample, the fluid's energies and momentum.
+struct SampleBasis {
+  BaseMotion motion;
+  double fluid_mass = 0.0;         // kg/m
+  Vec2 wall_force;                 // N/m, interval mean of the walls' (and screens') force on the fluid
+  double base_acceleration = 0.0;  // m/s^2, interval mean of the frame's acceleration
+  double kinetic_energy = 0.0, potential_energy = 0.0, momentum_x = 0.0;  // of the fluid, tank frame
+};
+
+// One column of timeseries.csv: its name, its unit, and its value in a sample. Each column is
+// defined once, with its value (Simulation::build_columns), so names and values cannot drift apart.
 struct Column {
   std::string name;
   std::string unit;
+  std::function<double(const Simulation&, const SampleBasis&)> value;
 };
 
 struct LeakRecord {
@@ -110,8 +126,9 @@ class Simulation {
   void start_plates();
   void advance_plates(double dt, const FrameForce& frame);
   void build_columns();
-  void append_structure_values(std::vector<double>& values, double kinetic_energy, double momentum_x,
-                               double potential_energy);
+  void add_column(std::string name, std::string unit, std::function<double(const Simulation&, const SampleBasis&)> value);
+  SampleBasis sample_basis() const;
+  void reset_interval_sums();
 
   CaseSpec spec_;
   Scene scene_;
@@ -135,6 +152,10 @@ class Simulation {
   std::size_t wall_contacts_ = 0;
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;
+  // Read once per sample, before the columns: the pressure probes (one cell grid for all) and the
+  // fluid particles inside each plate (PlateCoupling::fluid_inside keeps scratch).
+  std::vector<double> probe_values_;
+  std::vector<double> plate_inside_;
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;
   Vec2 acc_wall_force_;
