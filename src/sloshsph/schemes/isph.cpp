@@ -108,7 +108,7 @@ void IsphScheme::mark_repulsive_layer(const Particles& p) {
 }
 
 void IsphScheme::build_pairs(const std::vector<Vec2>& position) {
-  with_kernel(kernel_type_, h_, [&](const auto& k) { data_.pairs.build(k, position, neighbours_); });
+  data_.pairs.build(kernel_type_, h_, position, neighbours_);
 }
 
 void IsphScheme::initialise(Particles& p, const FrameForce& frame) {

@@ -332,7 +332,7 @@ void WcsphScheme::wall_values(Particles& p, const FrameForce& frame) {
 }
 
 void WcsphScheme::build_pairs(const Particles& p) {
-  with_kernel(kernel_type_, h_, [&](const auto& k) { data_.pairs.build(k, p.position, neighbours_); });
+  data_.pairs.build(kernel_type_, h_, p.position, neighbours_);
 }
 
 // One evaluation of the rates at the state the particles hold (positions, velocities, densities).

@@ -2,11 +2,17 @@
 // The pair layer: every interaction between two particles in a scheme goes through a PairList.
 //
 // A PairList is the Verlet neighbour list (sph/neighbours.hpp) filtered to the kernel's support
-// at one set of positions, with the kernel value W(r_ij) and the gradient factor F(r_ij)
-// (grad_i W_ij = F r_ij) kept per pair. It is built once per set of positions a step uses
-// (ISPH: r(t), then r*), by one pass that does the only square root and kernel evaluation of
-// each pair; every stage then reads the same pairs. So the cut-off lives here alone, the skin's
-// pairs cost nothing after the build, and the stages state only their physics.
+// at one set of positions: it is built once per set of positions a step uses (ISPH: r(t), then
+// r*; WCSPH: each evaluation of the rates and the end of the step), and every stage then visits
+// the same pairs through for_each, which hands it r_ij, the kernel value W and the gradient factor
+// F (grad_i W_ij = F r_ij). So the cut-off lives here alone, the skin's pairs cost nothing after
+// the build, and the stages state only their physics.
+//
+// What is kept per pair is the neighbour's index alone; r_ij, W and F are worked out from the
+// positions as a stage reads the pair (for_each is inlined into each stage, so a stage that
+// reads only F pays for no W). Measured on the Tait tank with screens (docs/performance.md, "The
+// pair layer"): keeping W and F per pair as well cost 20 bytes a Verlet slot (700 B a particle)
+// and did not run faster, the pair data no longer fitting the cache beside the particles.
 //
 // Order: a row keeps the order of its Verlet row, so every sum over pairs adds the same terms
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
@@ -18,6 +24,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/neighbours.hpp"
@@ -37,66 +44,80 @@ struct Pair {
 class PairList {
  public:
   // The pairs of every row of `nl` with r_ij^2 within kernel_reach2 at positions `x` (the same
-  // particles, fluid then walls, as the list was built for).
-  template <class K>
-  void build(const K& kernel, const std::vector<Vec2>& x, const NeighbourList& nl) {
+  // particles, fluid then walls, as the list was built for), for the kernel `type` of
+  // smoothing length h.
+  void build(KernelType type, double h, const std::vector<Vec2>& x, const NeighbourList& nl) {
     const std::size_t n = nl.rows();
     assert(x.size() == n && "one position per row");
     x_ = &x;
     nl_ = &nl;
-    self_w_ = kernel.w(0.0);
+    cubic_ = type == KernelType::cubic_spline;
+    wendland_ = WendlandC2(h);
+    cubic_spline_ = CubicSpline(h);
+    self_w_ = cubic_ ? cubic_spline_.w(0.0) : wendland_.w(0.0);
+    const double reach2 = cubic_ ? kernel_reach2(cubic_spline_) : kernel_reach2(wendland_);
     end_.resize(n);
     j_.resize(nl.total_pairs());
-    w_.resize(nl.total_pairs());
-    f_.resize(nl.total_pairs());
-    const double reach2 = kernel_reach2(kernel);
     const std::uint32_t* index = nl.begin(0);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 ri = x[i];
       std::size_t out = nl.offset(i);
       // Without a branch on the cut-off (a third of the Verlet row is skin, in no predictable
-      // order): every candidate is evaluated and written at `out`, which moves on only for a
-      // pair within the support (slot out <= s, so a row never overruns its Verlet slots).
+      // order): every candidate is written at `out`, which moves on only for a pair within the
+      // support (out <= s, so a row never overruns its Verlet slots).
       for (std::size_t s = nl.offset(i); s < nl.offset(i + 1); ++s) {
         const std::uint32_t j = index[s];
-        const double r2 = norm2(ri - x[j]);
         j_[out] = j;
-        kernel.w_and_gradient(std::sqrt(r2), w_[out], f_[out]);
-        out += r2 <= reach2 ? 1 : 0;
+        out += norm2(ri - x[j]) <= reach2 ? 1 : 0;
       }
       end_[i] = out;
     }
   }
 
+  void build(const WendlandC2& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
+    build(KernelType::wendland_c2, k.h, x, nl);
+  }
+  void build(const CubicSpline& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
+    build(KernelType::cubic_spline, k.h, x, nl);
+  }
+
   // Calls body(const Pair&) for each pair of row i, in the row's order.
   template <class Body>
   void for_each(std::size_t i, Body&& body) const {
-    const std::vector<Vec2>& x = *x_;
-    const Vec2 ri = x[i];
-    for (std::size_t s = nl_->offset(i); s < end_[i]; ++s) {
-      const std::uint32_t j = j_[s];
-      body(Pair{j, ri - x[j], w_[s], f_[s]});
-    }
+    if (cubic_) row(cubic_spline_, i, body);
+    else row(wendland_, i, body);
   }
 
   // W(0): a particle's own share of a kernel sum.
   double self_w() const { return self_w_; }
   std::size_t count(std::size_t i) const { return end_[i] - nl_->offset(i); }
   std::size_t rows() const { return end_.size(); }
-  bool built_on(const std::vector<Vec2>& x) const { return x_ == &x && end_.size() == x.size(); }
   std::size_t memory_bytes() const {
-    return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t) +
-           (w_.capacity() + f_.capacity()) * sizeof(double);
+    return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t);
   }
 
  private:
+  template <class K, class Body>
+  void row(const K& kernel, std::size_t i, Body& body) const {
+    const std::vector<Vec2>& x = *x_;
+    const Vec2 ri = x[i];
+    for (std::size_t s = nl_->offset(i); s < end_[i]; ++s) {
+      const std::uint32_t j = j_[s];
+      Pair q{j, ri - x[j], 0.0, 0.0};
+      kernel.w_and_gradient(std::sqrt(q.r2()), q.w, q.f);
+      body(q);
+    }
+  }
+
   const std::vector<Vec2>* x_ = nullptr;
   const NeighbourList* nl_ = nullptr;
+  bool cubic_ = false;
+  WendlandC2 wendland_{1.0};
+  CubicSpline cubic_spline_{1.0};
   double self_w_ = 0.0;
   std::vector<std::size_t> end_;  // row i's pairs: slots [nl.offset(i), end_[i])
   std::vector<std::uint32_t> j_;
-  std::vector<double> w_, f_;
 };
 
 }  // namespace sloshsph
