@@ -280,7 +280,7 @@ void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const 
           a += uij * (t.nu * laplacian_weight(4.0 * m * t.rho0 / (rho_sum * rho_sum), F, r2, t.eta2));
         }
         if (t.turbulence) {
-          const SymTensor2 Rj = fluid_j ? d.stress[j] : Ri;
+          const SymTensor2& Rj = fluid_j ? d.stress[j] : Ri;  // a reference: see predict_velocity (isph.cpp)
           const double sxx = Ri.xx / rho_i + Rj.xx / rho_j, sxy = Ri.xy / rho_i + Rj.xy / rho_j,
                        syy = Ri.yy / rho_i + Rj.yy / rho_j;
           a += Vec2{sxx * grad_c.x + sxy * grad_c.y, sxy * grad_c.x + syy * grad_c.y} * m;
@@ -331,8 +331,8 @@ void WcsphScheme::wall_values(Particles& p, const FrameForce& frame) {
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) p.density[w] = eos_density(p.pressure[w], rho0_, c0_);
 }
 
-void WcsphScheme::build_pairs(const Particles& p) {
-  data_.pairs.build(kernel_type_, h_, p.position, neighbours_);
+void WcsphScheme::build_pairs(const Particles& p, std::size_t first_row) {
+  data_.pairs.build(kernel_type_, h_, p.position, neighbours_, first_row);
 }
 
 // One evaluation of the rates at the state the particles hold (positions, velocities, densities).
@@ -488,8 +488,11 @@ void WcsphScheme::step_leapfrog(Particles& p, const StepInput& in) {
 void WcsphScheme::finish_step(Particles& p, const FrameForce& frame) {
   ++steps_;
   fluid_pressure(p);
-  build_pairs(p);  // the pairs at the new positions
-  if (spec_.shepard_interval > 0 && steps_ % spec_.shepard_interval == 0) {
+  // The pairs at the new positions: the Shepard filter reads the fluid's rows, the wall values
+  // only the walls'.
+  const bool shepard = spec_.shepard_interval > 0 && steps_ % spec_.shepard_interval == 0;
+  build_pairs(p, shepard ? 0 : p.n_fluid);
+  if (shepard) {
     wall_values(p, frame);
     shepard_density(p, data_.pairs, data_.scratch);
     std::copy(data_.scratch.begin(), data_.scratch.begin() + static_cast<std::ptrdiff_t>(p.n_fluid), p.density.begin());

@@ -95,7 +95,7 @@ class WcsphScheme {
   std::size_t memory_bytes() const;
 
  private:
-  void build_pairs(const Particles& p);
+  void build_pairs(const Particles& p, std::size_t first_row = 0);
   void step_symplectic(Particles& p, const StepInput& in);
   void step_leapfrog(Particles& p, const StepInput& in);
   void evaluate(Particles& p, const FrameForce& frame);

@@ -43,10 +43,12 @@ struct Pair {
 
 class PairList {
  public:
-  // The pairs of every row of `nl` with r_ij^2 within kernel_reach2 at positions `x` (the same
-  // particles, fluid then walls, as the list was built for), for the kernel `type` of
-  // smoothing length h.
-  void build(KernelType type, double h, const std::vector<Vec2>& x, const NeighbourList& nl) {
+  // The pairs of the rows from `first_row` on of `nl` with r_ij^2 within kernel_reach2 at
+  // positions `x` (the same particles, fluid then walls, as the list was built for), for the
+  // kernel `type` of smoothing length h. Rows before `first_row` are left empty (a pass that reads
+  // only the walls' rows need not filter the fluid's).
+  void build(KernelType type, double h, const std::vector<Vec2>& x, const NeighbourList& nl,
+             std::size_t first_row = 0) {
     const std::size_t n = nl.rows();
     assert(x.size() == n && "one position per row");
     x_ = &x;
@@ -58,9 +60,14 @@ class PairList {
     const double reach2 = cubic_ ? kernel_reach2(cubic_spline_) : kernel_reach2(wendland_);
     end_.resize(n);
     j_.resize(nl.total_pairs());
+    if (n == 0) return;
     const std::uint32_t* index = nl.begin(0);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
+      if (i < first_row) {
+        end_[i] = nl.offset(i);
+        continue;
+      }
       const Vec2 ri = x[i];
       std::size_t out = nl.offset(i);
       // Without a branch on the cut-off (a third of the Verlet row is skin, in no predictable
