@@ -12,7 +12,8 @@
 // positions as a stage reads the pair (for_each is inlined into each stage, so a stage that
 // reads only F pays for no W). Measured on the Tait tank with screens (docs/performance.md, "The
 // pair layer"): keeping W and F per pair as well cost 20 bytes a Verlet slot (700 B a particle)
-// and did not run faster, the pair data no longer fitting the cache beside the particles.
+// and did not run faster (probably because the pair data then no longer fit the cache beside the
+// particles; not measured further).
 //
 // Order: a row keeps the order of its Verlet row, so every sum over pairs adds the same terms
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
