@@ -136,7 +136,7 @@ void Simulation::build_columns() {
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k)
     add_column("eta:" + spec_.gauges[k].name, "m", [k](S s, B) { return s.surface_height(k) - s.gauge_datum_[k]; });
   for (std::size_t k = 0; k < spec_.pressure_probes.size(); ++k)
-    add_column("p:" + spec_.pressure_probes[k].name, "Pa", [k](S s, B) { return s.probe_values_[k]; });
+    add_column("p:" + spec_.pressure_probes[k].name, "Pa", [k](S, B b) { return b.probe_pressure[k]; });
   for (std::size_t k = 0; k < spec_.fronts.size(); ++k)
     add_column("front:" + spec_.fronts[k].name, "m", [k](S s, B) {
       const FrontProbeSpec& f = s.spec_.fronts[k];
@@ -171,7 +171,7 @@ void Simulation::build_columns() {
     add_column("F_plate_x:" + n, "N/m", [force](S s, B) { return force(s).x; });
     add_column("F_plate_y:" + n, "N/m", [force](S s, B) { return force(s).y; });
     add_column("E_plate:" + n, "J/m", [k](S s, B) { return s.plates_[k].strain_energy() + s.plates_[k].kinetic_energy(); });
-    add_column("plate_inside:" + n, "1", [k](S s, B) { return s.plate_inside_[k]; });
+    add_column("plate_inside:" + n, "1", [k](S, B b) { return b.plate_inside[k]; });
     add_column("plate_contacts:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].contacts()); });
     add_column("plate_crossings:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].crossings()); });
   }
@@ -419,9 +419,19 @@ double Simulation::probe_pressure(std::size_t probe) const {
   });
 }
 
-SampleBasis Simulation::sample_basis() const {
+// Not const: PlateCoupling::fluid_inside keeps scratch.
+SampleBasis Simulation::sample_basis() {
   const Particles& p = scene_.particles;
   SampleBasis b;
+  if (!spec_.pressure_probes.empty()) {
+    CellGrid grid;
+    grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
+    with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
+      for (const auto& probe : spec_.pressure_probes)
+        b.probe_pressure.push_back(read_pressure_probe(k, p, grid, probe, spec_.particles.dp));
+    });
+  }
+  for (PlateCoupling& pl : plates_) b.plate_inside.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
   b.motion = tank_motion();
   b.fluid_mass = fluid_mass();
   if (acc_dt_ > 0.0) {
@@ -446,18 +456,6 @@ void Simulation::reset_interval_sums() {
 }
 
 std::vector<double> Simulation::sample() {
-  const Particles& p = scene_.particles;
-  probe_values_.clear();
-  if (!spec_.pressure_probes.empty()) {
-    CellGrid grid;
-    grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
-    with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
-      for (const auto& probe : spec_.pressure_probes)
-        probe_values_.push_back(read_pressure_probe(k, p, grid, probe, spec_.particles.dp));
-    });
-  }
-  plate_inside_.clear();
-  for (PlateCoupling& pl : plates_) plate_inside_.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
   const SampleBasis basis = sample_basis();
   std::vector<double> values;
   values.reserve(columns_.size());

@@ -34,13 +34,16 @@ double reference_omega(const CaseSpec& spec);
 class Simulation;
 
 // What one sample works out once for all its columns: the tank's motion, the means over the
-// interval since the last sample, the fluid's energies and momentum.
+// interval since the last sample, the fluid's energies and momentum, the pressure probes and the
+// fluid inside each plate.
 struct SampleBasis {
   BaseMotion motion;
   double fluid_mass = 0.0;         // kg/m
   Vec2 wall_force;                 // N/m, interval mean of the walls' (and screens') force on the fluid
   double base_acceleration = 0.0;  // m/s^2, interval mean of the frame's acceleration
   double kinetic_energy = 0.0, potential_energy = 0.0, momentum_x = 0.0;  // of the fluid, tank frame
+  std::vector<double> probe_pressure;  // Pa, each pressure probe (one cell grid for all)
+  std::vector<double> plate_inside;    // fluid particles inside each plate
 };
 
 // One column of timeseries.csv: its name, its unit, and its value in a sample. Each column is
@@ -127,7 +130,7 @@ class Simulation {
   void advance_plates(double dt, const FrameForce& frame);
   void build_columns();
   void add_column(std::string name, std::string unit, std::function<double(const Simulation&, const SampleBasis&)> value);
-  SampleBasis sample_basis() const;
+  SampleBasis sample_basis();
   void reset_interval_sums();
 
   CaseSpec spec_;
@@ -152,10 +155,6 @@ class Simulation {
   std::size_t wall_contacts_ = 0;
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;
-  // Read once per sample, before the columns: the pressure probes (one cell grid for all) and the
-  // fluid particles inside each plate (PlateCoupling::fluid_inside keeps scratch).
-  std::vector<double> probe_values_;
-  std::vector<double> plate_inside_;
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;
   Vec2 acc_wall_force_;

@@ -25,17 +25,14 @@ struct WendlandC2 {
   double w(double r) const {
     const double q = r * inv_h;
     if (q >= 2.0) return 0.0;
-    const double a = 1.0 - 0.5 * q;
-    const double a2 = a * a;
-    return norm * (1.0 + 2.0 * q) * a2 * a2;
+    return w_of(q, 1.0 - 0.5 * q);
   }
 
   // (dW/dr) / r = norm * (-5 q (1 - q/2)^3) / (h r) = -5 norm (1 - q/2)^3 / h^2.
   double gradient_factor(double r) const {
     const double q = r * inv_h;
     if (q >= 2.0) return 0.0;
-    const double a = 1.0 - 0.5 * q;
-    return -5.0 * norm * a * a * a * inv_h * inv_h;
+    return gradient_factor_of(1.0 - 0.5 * q);
   }
 
   // w(r) and gradient_factor(r) together and without a branch (the pair layer's one evaluation
@@ -43,10 +40,17 @@ struct WendlandC2 {
   void w_and_gradient(double r, double& w_out, double& f_out) const {
     const double q = r * inv_h;
     const double a = std::max(1.0 - 0.5 * q, 0.0);
-    const double a2 = a * a;
-    w_out = norm * (1.0 + 2.0 * q) * a2 * a2;
-    f_out = -5.0 * norm * a * a * a * inv_h * inv_h;
+    w_out = w_of(q, a);
+    f_out = gradient_factor_of(a);
   }
+
+ private:
+  // The two formulas, of q = r/h and a = 1 - q/2.
+  double w_of(double q, double a) const {
+    const double a2 = a * a;
+    return norm * (1.0 + 2.0 * q) * a2 * a2;
+  }
+  double gradient_factor_of(double a) const { return -5.0 * norm * a * a * a * inv_h * inv_h; }
 };
 
 // Cubic B-spline (Monaghan & Lattanzio 1985), 2D normalisation 10 / (7 pi h^2).

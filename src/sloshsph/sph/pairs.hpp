@@ -39,7 +39,6 @@ struct Pair {
   double w;         // W(|r_ij|), 1/m^2
   double f;         // (dW/dr) / r: grad_i W_ij = f r_ij, 1/m^4
   double r2() const { return norm2(rij); }
-  Vec2 grad() const { return rij * f; }
 };
 
 class PairList {
