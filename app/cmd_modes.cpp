@@ -1,31 +1,16 @@
 // sloshsph modes CASE [--count N] [--json] [--tank-damping Z]... [--set KEY=VALUE]...
 // The first natural sloshing modes of the case's tank and fill (linear/modal.hpp) and, for a case
 // with [structure], the tanks as a linear equivalent TMD on it (run/tank_as_tmd.hpp).
-#include <algorithm>
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "sloshsph/core/errors.hpp"
-#include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/linear/closed_form.hpp"
-#include "sloshsph/linear/modal.hpp"
-#include "sloshsph/run/tank_as_tmd.hpp"
+#include "sloshsph/run/modes_summary.hpp"
 
 namespace sloshsph::app {
 namespace {
-
-// The tank damping ratios of the estimate: a fixed spread, the user's, and the optimum last.
-std::vector<EquivalentTmdResponse> tmd_responses(const TankAsTmd& t, std::vector<double> zetas) {
-  for (double z : {0.005, 0.01, 0.02, 0.03, 0.05, 0.10}) zetas.push_back(z);
-  std::sort(zetas.begin(), zetas.end());
-  zetas.erase(std::unique(zetas.begin(), zetas.end()), zetas.end());
-  std::vector<EquivalentTmdResponse> out;
-  for (double z : zetas) out.push_back(equivalent_tmd_response(t.tmd, z, t.band_low, t.band_high));
-  out.push_back(optimal_equivalent_tmd(t.tmd, t.band_low, t.band_high));
-  return out;
-}
 
 void print_tmd(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses) {
   const SdofSpec& s = t.tmd.structure;
@@ -75,35 +60,12 @@ Command add_modes_command(CLI::App& app) {
   add_set_option(sub, o->sets);
   return {sub, [o]() {
             const CaseSpec spec = load_case(o->case_path, o->sets);
-            const TankGeometry tank = make_tank(spec.tank, spec.where("tank.shape"));
-            const auto modes = sloshing_modes(tank, spec.fill.depth, spec.fluid.gravity, o->count);
-            const bool coupled = spec.structure && spec.structure->tanks > 0;
-            if (!coupled && (!o->tank_damping.empty() || o->tank_frequency_scale != 1.0))
-              throw InputError(spec.source, "structure",
-                               "--tank-damping and --tank-frequency-scale need a case whose [structure] carries "
-                               "the tanks (tanks >= 1)");
-            std::optional<TankAsTmd> tmd;
-            std::vector<EquivalentTmdResponse> responses;
-            if (coupled) {
-              tmd = tank_as_tmd(spec);
-              tmd->tmd.convective_omega *= o->tank_frequency_scale;
-              responses = tmd_responses(*tmd, o->tank_damping);
-            }
+            const ModesSummary m = modes_summary(spec, o->count, o->tank_damping, o->tank_frequency_scale);
             if (o->json) {
-              nlohmann::json j;
-              j["modes"] = nlohmann::json::array();
-              for (const auto& m : modes)
-                j["modes"].push_back({{"omega", m.omega},
-                                      {"frequency", m.frequency},
-                                      {"effective_mass_fraction", m.effective_mass_fraction}});
-              if (tmd) {
-                j["equivalent_tmd"] = equivalent_tmd_json(
-                    *tmd, std::vector<EquivalentTmdResponse>(responses.begin(), responses.end() - 1), responses.back());
-                j["equivalent_tmd"]["frequency_scale"] = o->tank_frequency_scale;
-              }
-              std::printf("%s\n", j.dump(2).c_str());
+              std::printf("%s\n", modes_json(m).dump(2).c_str());
               return 0;
             }
+            const auto& modes = m.modes;
             std::printf("%s: %s tank, depth %.6g m (linear potential theory, finite elements)\n", spec.source.c_str(),
                         spec.tank.shape.c_str(), spec.fill.depth);
             std::printf("%6s %14s %14s %12s %10s\n", "mode", "omega [rad/s]", "frequency [Hz]", "period [s]",
@@ -118,8 +80,8 @@ Command add_modes_command(CLI::App& app) {
             } catch (const InputError& e) {
               std::printf("thesis closed form (mode 1): not applicable (%s)\n", e.what());
             }
-            if (tmd) {
-              print_tmd(*tmd, responses);
+            if (m.tmd) {
+              print_tmd(*m.tmd, m.responses);
               if (o->tank_frequency_scale != 1.0)
                 std::printf("  (omega_1 of the TMD is the modal value x %.6g, --tank-frequency-scale)\n",
                             o->tank_frequency_scale);

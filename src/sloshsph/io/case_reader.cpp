@@ -687,6 +687,17 @@ CaseSpec read_case_text(const std::string& text, const std::string& source, cons
   return read_root(root, source, overrides);
 }
 
+std::string case_text_with_overrides(const std::string& text, const std::string& source,
+                                     const std::vector<std::string>& overrides) {
+  toml::table root = parse_or_throw(text, source);
+  TomlContext context;
+  context.file = source;
+  for (const auto& o : overrides) apply_override(root, o, context);
+  std::ostringstream out;
+  out << toml::toml_formatter(root) << "\n";
+  return out.str();
+}
+
 CaseSpec read_case_file(const std::string& path, const std::vector<std::string>& overrides) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "", "no such case file");

@@ -16,6 +16,12 @@ CaseSpec read_case_file(const std::string& path, const std::vector<std::string>&
 CaseSpec read_case_text(const std::string& text, const std::string& source,
                         const std::vector<std::string>& overrides = {});
 
+// The case's TOML with each override applied in order, nothing resolved or checked beyond the
+// overrides themselves (a case written back by the Python module). Throws InputError as
+// read_case_text does for a TOML syntax error or a bad override.
+std::string case_text_with_overrides(const std::string& text, const std::string& source,
+                                     const std::vector<std::string>& overrides);
+
 // The built-in default case run by `sloshsph run` with no CASE.
 const std::string& default_case_text();
 

@@ -168,6 +168,10 @@ void install_stop_handlers() {
 
 bool stop_requested() { return g_stop.load(); }
 
+void request_stop() { g_stop.store(true); }
+
+void clear_stop_request() { g_stop.store(false); }
+
 namespace {
 
 // Where a run stands between steps, beyond the simulation itself: what a checkpoint adds to
@@ -343,6 +347,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     files.csv->write_row(row);
     progress.series.add(row);
     ++progress.csv_rows;
+    if (options.on_sample) options.on_sample(sim.time(), sim.steps());
   };
   const bool snapshots = spec.output.snapshot_interval > 0.0;
   const double tol = 1e-9;

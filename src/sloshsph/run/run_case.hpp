@@ -7,6 +7,8 @@
 //   particles.pvd + particles/particles_NNNNNN.vtu   snapshots for ParaView
 //   checkpoint.bin   the state to resume from (written every --checkpoint-every and when
 //                    interrupted; removed when the run completes)
+#include <cstddef>
+#include <functional>
 #include <string>
 
 #include "sloshsph/core/case_spec.hpp"
@@ -19,6 +21,9 @@ struct RunOptions {
   bool progress = true;      // progress to stderr (a bar on a terminal, lines otherwise)
   std::string command_line;  // recorded in run.json
   double checkpoint_every = 0.0;  // s of simulated time between checkpoints (0: only on SIGINT/SIGTERM)
+  // Called after every row the run loop writes to timeseries.csv (the last one at the end) with the simulated
+  // time and the steps so far: the Python module's progress callback. It may call request_stop().
+  std::function<void(double time, std::size_t steps)> on_sample;
 };
 
 // Runs `spec` (already resolved) and returns the process exit code: 0 completed,
@@ -37,5 +42,9 @@ int resume_run(const std::string& dir, const RunOptions& options);
 // current step and write consistent outputs.
 void install_stop_handlers();
 bool stop_requested();
+// What the handlers do: the running simulation stops after its current step (async-signal-safe).
+void request_stop();
+// Forgets an earlier request, before a new run in the same process (the Python module).
+void clear_stop_request();
 
 }  // namespace sloshsph
