@@ -13,6 +13,7 @@ packages=(
   libfftw3-dev                                   # spectra (Welch PSD, admittance)
   libgtest-dev libgmock-dev libbenchmark-dev     # tests and benchmarks
   python3 python3-numpy python3-scipy python3-matplotlib  # plots and reports
+  python3-dev pybind11-dev python3-pytest        # the Python module (docs/python.md) and its tests
   libopenmpi-dev openmpi-bin                     # sweeps across machines (mpirun)
   chromium                                       # headless check of report.html (test only)
 )

@@ -8,6 +8,7 @@
 #  3. Runs in one ctest invocation (one summary line), one test per core:
 #       - the unit tests (label `unit`, with `unit-theory`: the gtest executables) and the
 #         mutation fuzz test of the readers, built with the sanitizers: any report fails the test;
+#       - the Python module's tests (python/tests, pytest: label `unit`) on the Release module;
 #       - the command-line tests (tests/cli: exit codes, the hostile-input corpus, runs, sweeps,
 #         interrupt and resume, reports; label `unit`) on the Release program: under the
 #         sanitizers they take about 1,080 s of test time instead of about 345 s, more than CI's
@@ -50,9 +51,9 @@ if [ "$mode" = release ]; then
   exec ctest --test-dir "$build" -L "unit|validation|regression" -j "$jobs" --output-on-failure "$@"
 fi
 
-# Release: only what the Release half runs (the program, the validation and regression tests, and
-# the theory tests that `sloshsph validate` runs in cli.validate_theory).
-"$root/scripts/build.sh" sloshsph test_validation test_regression test_linear
+# Release: only what the Release half runs (the program, the validation and regression tests, the
+# theory tests that `sloshsph validate` runs in cli.validate_theory, and the Python module).
+"$root/scripts/build.sh" sloshsph test_validation test_regression test_linear sloshsph_python
 # Sanitizers: the gtest executables and the readers' mutation test (target unit_tests; the
 # program is not needed: its command-line tests run on the Release build).
 # shellcheck source=scripts/sanitizer-env.sh
@@ -68,6 +69,7 @@ mkdir -p "$combined"
   echo "# Written by scripts/test.sh: the Release validation, regression and command-line tests, the unit tests under the sanitizers."
   echo "subdirs(\"$build/tests/validation\")"
   echo "subdirs(\"$build/tests/cli\")"
+  echo "subdirs(\"$build/python/tests\")"
   for include in "$asan_build"/tests/*_include.cmake; do echo "include(\"$include\")"; done
   echo "subdirs(\"$asan_build/tests/fuzz\")"
 } > "$combined/CTestTestfile.cmake"

@@ -34,6 +34,9 @@ void bind_errors() {
     } catch (const InputError& e) {
       py::object cls = py::module_::import("sloshsph.errors").attr("CaseError");
       PyErr_SetObject(cls.ptr(), py::make_tuple(e.what(), e.where(), e.key(), e.message()).ptr());
+    } catch (const RunFailure& e) {  // before the run directory exists (a settle that blows up)
+      py::object cls = py::module_::import("sloshsph.errors").attr("RunFailed");
+      PyErr_SetObject(cls.ptr(), py::make_tuple(std::string("run failed: ") + e.what()).ptr());
     } catch (const Interrupted& e) {
       py::object cls = py::module_::import("sloshsph.errors").attr("Interrupted");
       PyErr_SetObject(cls.ptr(), py::make_tuple(e.what()).ptr());

@@ -15,7 +15,7 @@ namespace sloshsph::python {
 CaseSpec load_case(const std::string& text, const std::string& source, const std::string& name,
                    const std::vector<std::string>& overrides);
 
-void bind_errors();                        // InputError -> sloshsph.CaseError, Interrupted -> sloshsph.Interrupted
+void bind_errors();  // InputError -> sloshsph.CaseError, RunFailure -> RunFailed, Interrupted -> Interrupted
 void bind_cases(pybind11::module_& m);     // reading, checking and writing cases; modes, tune
 void bind_runs(pybind11::module_& m);      // run, resume, sweep plans, the CSV tables
 void bind_analysis(pybind11::module_& m);  // filter, steady state, energy, spectra, admittance
