@@ -9,3 +9,4 @@ cd "$root"
 ./build/app/sloshsph run --out out/default --force "$@"
 echo
 echo "Done. The run directory is out/default/: timeseries.csv, summary.json, particles.pvd (open in ParaView)."
+"$root/scripts/install-python-path.sh"
