@@ -183,7 +183,6 @@ void bind_runs(py::module_& m) {
       },
       py::arg("dir"), py::arg("threads"), py::arg("checkpoint_every"), py::arg("command_line"), py::arg("progress"),
       "Continues an interrupted run as `sloshsph resume`; returns the exit code.");
-  m.def("stop_requested", &stop_requested, "Whether SIGINT/SIGTERM (or a callback) stopped the last run.");
 
   m.def(
       "read_csv_table",
