@@ -77,14 +77,18 @@ struct Callback {
     options.on_sample = [this](double time, std::size_t steps) {
       if (!error.is_none() || stopped_by_callback) return;
       py::gil_scoped_acquire gil;
+      // Nothing may escape into the run loop: it would leave the run directory without its summary.
       try {
         const py::object result = function(time, steps);
-        if (!result.is_none() && !result.cast<bool>()) {
+        if (result.ptr() == Py_False) {  // False itself: None (a callback that returns nothing) goes on
           stopped_by_callback = true;
           request_stop();
         }
       } catch (py::error_already_set& e) {
         error = e.value();
+        request_stop();
+      } catch (const std::exception& e) {
+        error = py::module_::import("builtins").attr("RuntimeError")(std::string("progress callback: ") + e.what());
         request_stop();
       }
     };
