@@ -96,3 +96,41 @@ def test_bad_sweep_range():
     path = os.path.join(CASES, "liu_lin_2008.toml")
     with pytest.raises(sloshsph.CaseError, match="beta"):
         sloshsph.sweep(path, beta="1:0.5:x", progress=False)
+
+
+def test_directory_locked_by_a_running_program(tmp_path):
+    import subprocess
+    import time
+
+    from conftest import PROGRAM
+
+    out = tmp_path / "busy"
+    runner = subprocess.Popen([PROGRAM, "run", os.path.join(CASES, "liu_lin_2008.toml"), *small_sets(**{"time.end": 30.0}),
+                               "--threads", "1", "--quiet", "--out", str(out)],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        for _ in range(600):  # the run directory appears once the fluid has settled
+            if (out / "timeseries.csv").exists():
+                break
+            time.sleep(0.05)
+        assert (out / "timeseries.csv").exists()
+        code, _, err = cli("run", os.path.join(CASES, "liu_lin_2008.toml"), *small_sets(), "--force", "--out", out)
+        assert code == 2
+        message = python_error(lambda: sloshsph.run(small_case(), out=out, force=True, progress=False))
+        assert message == cli_error(err)
+        assert "another process" in message or str(runner.pid) in message
+    finally:
+        runner.kill()
+        runner.wait()
+
+
+def test_resume_after_case_toml_changed(tmp_path):
+    out = tmp_path / "stopped"
+    sloshsph.run(small_case(), out=out, threads=1, progress=lambda p: p.time < 0.2)
+    with open(out / "case.toml", "a", encoding="utf-8") as f:
+        f.write("# edited\n")
+    code, _, err = cli("resume", out)
+    assert code == 2
+    message = python_error(lambda: sloshsph.resume(out))
+    assert message == cli_error(err)
+    assert "case.toml changed" in message
