@@ -4,7 +4,7 @@
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/resonance.py [--quick] [--out DIR]
 
-About 4 minutes on two cores (dp = 5 mm, 10 s); --quick: dp = 10 mm, 3 s, a few seconds.
+About 80 s on two cores (dp = 5 mm, 10 s; measured 2026-12-04); --quick: dp = 10 mm, 3 s, 7 s.
 Writes DIR/run/ (the run directory) and DIR/resonance.png.
 """
 

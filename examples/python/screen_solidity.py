@@ -5,7 +5,8 @@ crest at the right wall, and the energy dissipated per cycle, against beta).
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/screen_solidity.py [--quick] [--jobs 2]
 
-Fifteen runs of 40 s at dp = 7 mm: about 35 minutes on two cores (two at a time). --quick: two
+Fifteen runs of 40 s at dp = 7 mm: about 35 minutes on two cores, two at a time (an estimate from the
+120 s run, 677 s on 2 threads: not timed). --quick: two
 solidities x two ratios of 3 s at dp = 14 mm, under a minute. Each solidity is one sweep
 directory under --out (resumable: the same command skips finished points), and the curves are
 DIR/screen_solidity.png.
