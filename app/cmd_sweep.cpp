@@ -42,13 +42,6 @@ std::string self_executable() {
   return p.string();
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Every --set of one point: those that hold for every point, then the point's frequency and
 // axis values (the ranged --set texts are replaced by the point's values).
 std::vector<std::string> point_sets(const SweepOptions& o, const SweepPoint& p) {
@@ -60,8 +53,7 @@ std::vector<std::string> point_sets(const SweepOptions& o, const SweepPoint& p) 
 // Starts `sloshsph run` for one point, its output going to DIR/<label>.log.
 pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool force) {
   std::vector<std::string> args;
-  std::error_code ec;
-  if (point_status(p.directory) == "interrupted" && fs::exists(fs::path(p.directory) / "checkpoint.bin", ec)) {
+  if (point_resumable(p)) {
     // An interrupted point continues from its checkpoint (same results as an unbroken run).
     args = {self_executable(), "resume", p.directory, "--quiet", "--threads", std::to_string(threads)};
   } else {
@@ -91,12 +83,7 @@ pid_t start_point(const SweepOptions& o, const SweepPoint& p, int threads, bool 
 // A finished point is skipped, but only if it was run from the same resolved case: a sweep
 // directory reused with another case or other --set values is refused, not silently mixed.
 bool already_done(const SweepOptions& o, const SweepPoint& p) {
-  const std::string status = point_status(p.directory);
-  if (status != "completed" && !(status == "failed" && !o.retry_failed)) return false;
-  const std::string expected = resolved_case_toml(load_case(o.case_path, point_sets(o, p)));
-  if (read_text(fs::path(p.directory) / "case.toml") != expected)
-    throw InputError(p.directory, "", "this point was run from a different case or --set values; use another --out");
-  return true;
+  return point_finished(p, o.retry_failed, [&] { return resolved_case_toml(load_case(o.case_path, point_sets(o, p))); });
 }
 
 // "sweep:" or, under mpirun, "sweep[rank/size]:".

@@ -38,13 +38,7 @@ class Case:
     def from_file(cls, path):
         """The case file at ``path`` (named after the file's stem, as ``sloshsph run`` names it)."""
         path = os.fspath(path)
-        try:
-            if not os.path.isfile(path):
-                raise _case_error(path, "no such case file")
-            with open(path, "rb") as f:
-                data = f.read()
-        except OSError:
-            raise _case_error(path, "cannot read the case file") from None
+        data = _core.read_case_file_text(path)
         try:
             text = data.decode("utf-8")
         except UnicodeDecodeError:
@@ -153,13 +147,6 @@ class Case:
     def __repr__(self):
         extra = f", {len(self._overrides)} overrides" if self._overrides else ""
         return f"<sloshsph.Case {self.name!r} from {self._source}{extra}>"
-
-
-def _case_error(where, message):
-    """A CaseError worded as the engine words its InputError."""
-    from .errors import CaseError
-
-    return CaseError(f"{where}: {message}", where, "", message)
 
 
 def as_case(case):

@@ -52,8 +52,8 @@ class _Bar:
         sys.stderr.flush()
 
 
-def _progress_function(progress, label, end_time):
-    """The C++ callback (time, steps) -> None/False for the ``progress`` argument."""
+def _progress_function(progress, label):
+    """The C++ callback (time, end_time, steps) -> None/False for the ``progress`` argument."""
     if progress is None:
         progress = sys.stderr.isatty()
     if progress is False:
@@ -64,7 +64,7 @@ def _progress_function(progress, label, end_time):
     start = _time.monotonic()
     state = {"stopped": False}
 
-    def callback(t, steps):
+    def callback(t, end_time, steps):
         result = report(ProgressInfo(t, end_time, steps, _time.monotonic() - start))
         if result is False:
             state["stopped"] = True
@@ -129,8 +129,7 @@ def run(case, out=None, *, threads=None, force=False, progress=None, checkpoint_
     before anything is written.
     """
     case = as_case(case)
-    end = _end_time(case)
-    callback = _progress_function(progress, case.name, end)
+    callback = _progress_function(progress, case.name)
     path = os.fspath(out) if out is not None else os.path.join("out", case.name)
     code = _core.run_case(case._text, case.source, case.name, case.overrides, path, bool(force), _threads(threads),
                           _checkpoint(checkpoint_every), _command_line("run"), callback)
@@ -142,18 +141,9 @@ def resume(run_dir, *, threads=None, progress=None, checkpoint_every=None, check
     thread count of the first part, the results are bitwise those of an unbroken run. Raises
     ``CaseError`` when the directory has no checkpoint or its case.toml changed."""
     path = os.fspath(run_dir)
-    case_file = os.path.join(path, "case.toml")
-    end = _end_time(Case.from_file(case_file)) if os.path.isfile(case_file) else 0.0
-    callback = _progress_function(progress, os.path.basename(os.path.normpath(path)), end)
+    callback = _progress_function(progress, os.path.basename(os.path.normpath(path)))
     code = _core.resume_run(path, _threads(threads), _checkpoint(checkpoint_every), _command_line("resume"), callback)
     return _finish(code, path, check, callback is not None and callback.state["stopped"])
-
-
-def _end_time(case):
-    try:
-        return float(case.resolved()["time.end"])
-    except Exception:  # noqa: BLE001 - the run itself reports a bad case, with its message
-        return 0.0
 
 
 class Run:

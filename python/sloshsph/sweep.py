@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _core, _toml
 from .case import as_case
-from .errors import CaseError, Interrupted, RunFailed
+from .errors import Interrupted, RunFailed
 from .runs import Run
 
 
@@ -84,23 +84,15 @@ def _betas(beta):
 
 
 def _already_done(case, fixed, point, retry_failed):
-    status = _core.point_status(point["directory"])
-    if status != "completed" and not (status == "failed" and not retry_failed):
-        return False
-    expected = _core.check_case(case._text, case.source, case.name, fixed + point["overrides"])[1]
-    with open(os.path.join(point["directory"], "case.toml"), encoding="utf-8") as f:
-        if f.read() != expected:
-            where = point["directory"]
-            message = "this point was run from a different case or --set values; use another out"
-            raise CaseError(f"{where}: {message}", where, "", message)
-    return True
+    """As ``sloshsph sweep`` decides: finished from the same resolved case (CaseError for another's)."""
+    return _core.point_finished(point, bool(retry_failed),
+                                lambda: _core.check_case(case._text, case.source, case.name, fixed + point["overrides"])[1])
 
 
 def _start(case, fixed, point, threads):
     """One point in its own Python process (sloshsph._point), its output in DIR/<label>.log."""
-    resume = (_core.point_status(point["directory"]) == "interrupted"
-              and os.path.isfile(os.path.join(point["directory"], "checkpoint.bin")))
-    job = {"text": case._text if isinstance(case._text, str) else case._text.decode("utf-8", "replace"),
+    resume = _core.point_resumable(point)
+    job = {"text": case._text,  # str: a text that is not UTF-8 fails plan_sweep before any point starts
            "source": case.source, "name": case.name, "overrides": fixed + point["overrides"],
            "directory": point["directory"], "threads": threads, "force": os.path.exists(point["directory"]),
            "resume": resume}

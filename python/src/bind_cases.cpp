@@ -55,6 +55,9 @@ void bind_cases(py::module_& m) {
       },
       py::arg("text"), py::arg("source"), py::arg("name"), py::arg("overrides"),
       "Reads and resolves a case; returns (name, resolved TOML). Raises CaseError.");
+  m.def(
+      "read_case_file_text", [](const std::string& path) { return py::bytes(read_case_file_text(path)); },
+      py::arg("path"), "The bytes of a case file; raises CaseError as the program does.");
   m.def("case_text_with_overrides", &case_text_with_overrides, py::arg("text"), py::arg("source"),
         py::arg("overrides"), "The case's TOML with the overrides applied (not resolved).");
   m.def(

@@ -2,10 +2,10 @@
 // the engine steps, with SIGINT/SIGTERM stopping the run as they stop `sloshsph run`, and a
 // progress callback called (under the lock) after every sample.
 #include <omp.h>
+#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <csignal>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,33 +21,6 @@ namespace py = pybind11;
 
 namespace sloshsph::python {
 namespace {
-
-extern "C" void on_stop_signal(int) { request_stop(); }
-
-// While a run goes on, SIGINT and SIGTERM ask it to stop after its step and write a checkpoint
-// (as for `sloshsph run`); Python's own handlers are put back afterwards. A stop left over from
-// an earlier run is forgotten first.
-class StopSignals {
- public:
-  StopSignals() {
-    clear_stop_request();
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
 
 // The thread count of this run (0: the default), restored afterwards: omp_set_num_threads sets
 // the calling thread's value only.
@@ -74,12 +47,12 @@ struct Callback {
 
   void attach(RunOptions& options) {
     if (function.is_none()) return;
-    options.on_sample = [this](double time, std::size_t steps) {
+    options.on_sample = [this](double time, double end_time, std::size_t steps) {
       if (!error.is_none() || stopped_by_callback) return;
       py::gil_scoped_acquire gil;
       // Nothing may escape into the run loop: it would leave the run directory without its summary.
       try {
-        const py::object result = function(time, steps);
+        const py::object result = function(time, end_time, steps);
         if (result.ptr() == Py_False) {  // False itself: None (a callback that returns nothing) goes on
           stopped_by_callback = true;
           request_stop();
@@ -107,7 +80,9 @@ int run_with(py::object progress, int threads, const std::function<int(const Run
   int code = 0;
   {
     py::gil_scoped_release release;
-    StopSignals signals;
+    // While the run goes on, SIGINT and SIGTERM stop it after its step with a checkpoint, as they
+    // stop `sloshsph run`; Python's own handlers are put back afterwards.
+    ScopedStopHandlers signals;
     Threads scope(threads);
     code = body(options);
   }
@@ -129,18 +104,19 @@ py::list sweep_points_to_python(const std::vector<SweepPoint>& points) {
   return out;
 }
 
+SweepPoint sweep_point_from_python(const py::dict& d) {
+  SweepPoint p;
+  p.beta = d["beta"].cast<double>();
+  p.label = d["label"].cast<std::string>();
+  p.overrides = d["overrides"].cast<std::vector<std::string>>();
+  p.axis_values = d["axis_values"].cast<std::vector<std::string>>();
+  p.directory = d["directory"].cast<std::string>();
+  return p;
+}
+
 std::vector<SweepPoint> sweep_points_from_python(const py::list& list) {
   std::vector<SweepPoint> points;
-  for (const py::handle h : list) {
-    const py::dict d = py::reinterpret_borrow<py::dict>(h);
-    SweepPoint p;
-    p.beta = d["beta"].cast<double>();
-    p.label = d["label"].cast<std::string>();
-    p.overrides = d["overrides"].cast<std::vector<std::string>>();
-    p.axis_values = d["axis_values"].cast<std::vector<std::string>>();
-    p.directory = d["directory"].cast<std::string>();
-    points.push_back(std::move(p));
-  }
+  for (const py::handle h : list) points.push_back(sweep_point_from_python(py::reinterpret_borrow<py::dict>(h)));
   return points;
 }
 
@@ -228,6 +204,16 @@ void bind_runs(py::module_& m) {
       py::arg("text"), py::arg("source"), py::arg("name"), py::arg("fixed"), py::arg("betas"), py::arg("axes"),
       py::arg("dir"), "The points of a sweep, as `sloshsph sweep` plans them.");
   m.def("point_status", &point_status, py::arg("directory"));
+  m.def(
+      "point_finished",
+      [](const py::dict& point, bool retry_failed, const std::function<std::string()>& expected_case_toml) {
+        return point_finished(sweep_point_from_python(point), retry_failed, expected_case_toml);
+      },
+      py::arg("point"), py::arg("retry_failed"), py::arg("expected_case_toml"),
+      "Whether a point need not run again (as `sloshsph sweep` decides); CaseError for another case's run.");
+  m.def(
+      "point_resumable", [](const py::dict& point) { return point_resumable(sweep_point_from_python(point)); },
+      py::arg("point"), "Whether a point was interrupted with a checkpoint to resume from.");
   m.def(
       "frequency_response_csv",
       [](const std::string& text, const std::string& source, const std::string& name,

@@ -698,14 +698,18 @@ std::string case_text_with_overrides(const std::string& text, const std::string&
   return out.str();
 }
 
-CaseSpec read_case_file(const std::string& path, const std::vector<std::string>& overrides) {
+std::string read_case_file_text(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "", "no such case file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot read the case file");
   std::ostringstream text;
   text << in.rdbuf();
-  return read_case_text(text.str(), path, overrides);
+  return text.str();
+}
+
+CaseSpec read_case_file(const std::string& path, const std::vector<std::string>& overrides) {
+  return read_case_text(read_case_file_text(path), path, overrides);
 }
 
 const std::string& default_case_text() {

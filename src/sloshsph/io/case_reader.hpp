@@ -12,6 +12,10 @@ namespace sloshsph {
 // Reads `path`, applies each "KEY=VALUE" of `overrides` (the --set options) in order.
 CaseSpec read_case_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The bytes of the case file at `path`, as read_case_file reads them; InputError(path) when there
+// is no such file or it cannot be read.
+std::string read_case_file_text(const std::string& path);
+
 // The same from text; `source` names it in messages.
 CaseSpec read_case_text(const std::string& text, const std::string& source,
                         const std::vector<std::string>& overrides = {});

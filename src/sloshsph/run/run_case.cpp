@@ -43,7 +43,7 @@ double peak_resident_bytes() {
 
 std::atomic<bool> g_stop{false};
 
-void on_signal(int) { g_stop.store(true); }
+void on_signal(int) { request_stop(); }
 
 std::string now_iso8601() {
   const std::time_t t = std::time(nullptr);
@@ -170,7 +170,19 @@ bool stop_requested() { return g_stop.load(); }
 
 void request_stop() { g_stop.store(true); }
 
-void clear_stop_request() { g_stop.store(false); }
+ScopedStopHandlers::ScopedStopHandlers() {
+  g_stop.store(false);
+  struct sigaction action {};
+  action.sa_handler = on_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &before_int_);
+  sigaction(SIGTERM, &action, &before_term_);
+}
+
+ScopedStopHandlers::~ScopedStopHandlers() {
+  sigaction(SIGINT, &before_int_, nullptr);
+  sigaction(SIGTERM, &before_term_, nullptr);
+}
 
 namespace {
 
@@ -347,7 +359,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     files.csv->write_row(row);
     progress.series.add(row);
     ++progress.csv_rows;
-    if (options.on_sample) options.on_sample(sim.time(), sim.steps());
+    if (options.on_sample) options.on_sample(sim.time(), spec.time.end, sim.steps());
   };
   const bool snapshots = spec.output.snapshot_interval > 0.0;
   const double tol = 1e-9;

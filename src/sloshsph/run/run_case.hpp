@@ -7,6 +7,7 @@
 //   particles.pvd + particles/particles_NNNNNN.vtu   snapshots for ParaView
 //   checkpoint.bin   the state to resume from (written every --checkpoint-every and when
 //                    interrupted; removed when the run completes)
+#include <csignal>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -21,9 +22,10 @@ struct RunOptions {
   bool progress = true;      // progress to stderr (a bar on a terminal, lines otherwise)
   std::string command_line;  // recorded in run.json
   double checkpoint_every = 0.0;  // s of simulated time between checkpoints (0: only on SIGINT/SIGTERM)
-  // Called after every row the run loop writes to timeseries.csv (the last one at the end) with the simulated
-  // time and the steps so far: the Python module's progress callback. It may call request_stop().
-  std::function<void(double time, std::size_t steps)> on_sample;
+  // Called after every row the run loop writes to timeseries.csv (the last one at the end) with the
+  // simulated time, the case's time.end and the steps so far: the Python module's progress
+  // callback. It may call request_stop().
+  std::function<void(double time, double end_time, std::size_t steps)> on_sample;
 };
 
 // Runs `spec` (already resolved) and returns the process exit code: 0 completed,
@@ -44,7 +46,19 @@ void install_stop_handlers();
 bool stop_requested();
 // What the handlers do: the running simulation stops after its current step (async-signal-safe).
 void request_stop();
-// Forgets an earlier request, before a new run in the same process (the Python module).
-void clear_stop_request();
+
+// The same handlers for one scope (the Python module, whose interpreter has its own): an earlier
+// stop request is forgotten at its start, and the handlers before it are put back at its end.
+class ScopedStopHandlers {
+ public:
+  ScopedStopHandlers();
+  ~ScopedStopHandlers();
+  ScopedStopHandlers(const ScopedStopHandlers&) = delete;
+  ScopedStopHandlers& operator=(const ScopedStopHandlers&) = delete;
+
+ private:
+  struct sigaction before_int_ {};
+  struct sigaction before_term_ {};
+};
 
 }  // namespace sloshsph

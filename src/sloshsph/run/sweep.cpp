@@ -274,6 +274,23 @@ std::string point_status(const std::string& directory) {
   return (*s)["status"].get<std::string>();
 }
 
+bool point_finished(const SweepPoint& p, bool retry_failed, const std::function<std::string()>& expected_case_toml) {
+  const std::string status = point_status(p.directory);
+  if (status != "completed" && !(status == "failed" && !retry_failed)) return false;
+  std::ifstream in(std::filesystem::path(p.directory) / "case.toml", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (text.str() != expected_case_toml())
+    throw InputError(p.directory, "", "this point was run from a different case or --set values; use another --out");
+  return true;
+}
+
+bool point_resumable(const SweepPoint& p) {
+  std::error_code ec;
+  return point_status(p.directory) == "interrupted" &&
+         std::filesystem::exists(std::filesystem::path(p.directory) / "checkpoint.bin", ec);
+}
+
 std::string frequency_response_csv(const CaseSpec& spec, const std::vector<SweepAxis>& axes,
                                    const std::vector<SweepPoint>& points) {
   std::string out = "beta,omega,eta_max,eta_min,F_sw_max,F_sw_min,energy_per_cycle,status,normalised_energy,F_w_max,F_w_min";

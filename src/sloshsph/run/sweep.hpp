@@ -4,6 +4,7 @@
 // them all, each in its own run directory under the sweep directory, then one
 // frequency_response.csv assembled from the points' summary.json files. Process management lives in the command (app/cmd_sweep.cpp);
 // this is the plan and the table.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,15 @@ double excitation_beta(const CaseSpec& spec);
 // What a point's run directory says: "completed", "failed", "interrupted", or "" when it has no
 // readable summary.json (not run, or killed).
 std::string point_status(const std::string& directory);
+
+// Whether a point need not run again: it completed (or failed, unless `retry_failed`) from the
+// same case: `expected_case_toml` gives what resolved_case_toml makes of the point's case (called
+// only then: reading a case can take a modal solve). Throws InputError(directory) when the
+// directory holds a run of another case or other --set values.
+bool point_finished(const SweepPoint& p, bool retry_failed, const std::function<std::string()>& expected_case_toml);
+
+// Whether a point was interrupted with a checkpoint to resume from (rather than to run again).
+bool point_resumable(const SweepPoint& p);
 
 // frequency_response.csv from the points' summary.json files. Fixed columns (users' scripts
 // rely on them): beta, omega, eta_max, eta_min, F_sw_max, F_sw_min, energy_per_cycle, status;
