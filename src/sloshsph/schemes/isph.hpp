@@ -40,6 +40,13 @@ struct IsphData {
   BicgstabWork krylov;
   Multigrid multigrid;
   std::vector<Vec2> ppe_row_position;  // r* of each row's particle (multigrid aggregates)
+  // The hierarchy is kept from step to step while the PPE has the same rows (the same particles in
+  // the same order: no neighbour-list rebuild, which reorders them) for at most
+  // kMultigridKeptSteps steps (IsphScheme::solve_assembled_ppe).
+  std::vector<std::uint32_t> multigrid_rows;  // ppe_particle when the hierarchy was built
+  std::uint64_t multigrid_neighbour_builds = 0;  // the neighbour list's build count then
+  std::uint32_t multigrid_age = 0;            // steps that have used it since
+  bool multigrid_kept = false;                // this step's solve used a kept hierarchy
   // The pairs within the kernel's support, built at r(t) at the start of a step and again at r*
   // after the prediction (sph/pairs.hpp).
   PairList pairs;
@@ -71,9 +78,10 @@ class IsphScheme {
   const NeighbourList& neighbours() const { return neighbours_; }
   double reference_density() const { return rho_ref_; }
   double h() const { return h_; }
-  // Checkpoints: besides the particles, ISPH keeps only its neighbour list between steps.
-  void save_state(StateWriter& w) const { neighbours_.save(w); }
-  void load_state(StateReader& r) { neighbours_.load(r); }
+  // Checkpoints: besides the particles, ISPH keeps its neighbour list and the multigrid hierarchy
+  // (with what decides whether it is kept) between steps.
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
   std::size_t memory_bytes() const;
 
  private:
@@ -86,7 +94,8 @@ class IsphScheme {
   std::size_t pin_unanchored_blocks(const Particles& p);
   double assemble_ppe_row(const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
   KrylovReport solve_ppe_system(bool multigrid);
-  KrylovReport solve_assembled_ppe(bool multigrid);
+  KrylovReport solve_assembled_ppe(bool multigrid, bool may_keep_hierarchy);
+  bool can_keep_multigrid() const;
   void update_neighbours(Particles& p);
   double clip(double pressure) const;
   void mark_repulsive_layer(const Particles& p);

@@ -1,5 +1,7 @@
 #include "sloshsph/schemes/ppe_multigrid.hpp"
 
+#include "sloshsph/core/state_io.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -238,6 +240,56 @@ bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, dou
   mg.fine_r.resize(n);
   mg.ready = factor_coarsest(mg);
   return mg.ready;
+}
+
+void refresh_fine_diagonal(const SparseRows& A, Multigrid& mg) {
+  const std::size_t n = A.rows();
+  mg.fine_inverse_diagonal.resize(n);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) mg.fine_inverse_diagonal[i] = A.inverse_diagonal(i);
+}
+
+void save_multigrid(const Multigrid& mg, StateWriter& w) {
+  w.value("multigrid.ready", static_cast<std::uint8_t>(mg.ready));
+  w.value("multigrid.levels", static_cast<std::uint64_t>(mg.ready ? mg.levels.size() : 0));
+  if (!mg.ready) return;
+  w.value("multigrid.fine_rows", static_cast<std::uint64_t>(mg.fine_inverse_diagonal.size()));
+  for (const MultigridLevel& L : mg.levels) {
+    w.array("multigrid.slot_begin", L.A.slot_begin);
+    w.array("multigrid.slot_end", L.A.slot_end);
+    w.array("multigrid.column", L.A.column);
+    w.array("multigrid.value", L.A.value);
+    w.array("multigrid.inverse_diagonal", L.inverse_diagonal);
+    w.array("multigrid.member_begin", L.member_begin);
+    w.array("multigrid.member", L.member);
+    w.array("multigrid.parent", L.parent);
+  }
+}
+
+void load_multigrid(Multigrid& mg, StateReader& r) {
+  mg.ready = r.value<std::uint8_t>("multigrid.ready") != 0;
+  const auto count = static_cast<std::size_t>(r.value<std::uint64_t>("multigrid.levels"));
+  mg.levels.clear();
+  if (!mg.ready) return;
+  const auto fine_rows = static_cast<std::size_t>(r.value<std::uint64_t>("multigrid.fine_rows"));
+  mg.fine_inverse_diagonal.assign(fine_rows, 1.0);  // refreshed from the matrix before use
+  mg.fine_r.resize(fine_rows);
+  mg.levels.resize(count);
+  for (MultigridLevel& L : mg.levels) {
+    L.A.slot_begin = r.array<std::size_t>("multigrid.slot_begin");
+    L.A.slot_end = r.array<std::size_t>("multigrid.slot_end");
+    L.A.column = r.array<std::uint32_t>("multigrid.column");
+    L.A.value = r.array<double>("multigrid.value");
+    L.inverse_diagonal = r.array<double>("multigrid.inverse_diagonal");
+    L.member_begin = r.array<std::size_t>("multigrid.member_begin");
+    L.member = r.array<std::uint32_t>("multigrid.member");
+    L.parent = r.array<std::uint32_t>("multigrid.parent");
+    const std::size_t rows = L.A.rows();
+    L.b.resize(rows);
+    L.x.resize(rows);
+    L.r.resize(rows);
+  }
+  mg.ready = count > 0 && factor_coarsest(mg);
 }
 
 void apply_multigrid(const SparseRows& A, Multigrid& mg, const std::vector<double>& r, std::vector<double>& z) {

@@ -67,10 +67,24 @@ struct Multigrid {
   std::size_t memory_bytes() const;
 };
 
+class StateWriter;
+class StateReader;
+
 // Builds the hierarchy for A (diagonal first in each row, as SparseRows holds it), the rows at
 // `position` (m), the fine aggregates cells of side `cell` (m). Returns false (and leaves
 // mg.ready false) when the coarsest matrix is singular or not finite.
 bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, double cell, Multigrid& mg);
+
+// The finest level's diagonal from A, for a hierarchy built for an earlier matrix of the same rows
+// (IsphScheme keeps a hierarchy for several steps, docs/physics.md): the smoother and the
+// restriction then use this step's diagonal, the coarse levels the one of the build.
+void refresh_fine_diagonal(const SparseRows& A, Multigrid& mg);
+
+// Checkpoints: the hierarchy as built (a kept hierarchy is part of the run's state, so that a
+// resumed run gives the same bits as an unbroken one). The coarsest level's LU is factored again
+// on loading, from the stored coarse matrix.
+void save_multigrid(const Multigrid& mg, StateWriter& w);
+void load_multigrid(Multigrid& mg, StateReader& r);
 
 // z = M^-1 r by one V-cycle from z = 0 (z = D^-1 r if the last build failed).
 void apply_multigrid(const SparseRows& A, Multigrid& mg, const std::vector<double>& r, std::vector<double>& z);

@@ -39,7 +39,8 @@ struct WendlandC2 {
   // per pair): the same values for q < 2, and 0 beyond (the gradient factor -0 there).
   void w_and_gradient(double r, double& w_out, double& f_out) const {
     const double q = r * inv_h;
-    const double a = std::max(1.0 - 0.5 * q, 0.0);
+    const double a0 = 1.0 - 0.5 * q;
+    const double a = a0 < 0.0 ? 0.0 : a0;  // std::max(a0, 0.0), written so that loops of it vectorise
     w_out = w_of(q, a);
     f_out = gradient_factor_of(a);
   }

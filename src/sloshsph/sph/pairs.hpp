@@ -8,13 +8,14 @@
 // F (grad_i W_ij = F r_ij). So the cut-off lives here alone, the skin's pairs cost nothing after
 // the build, and the stages state only their physics.
 //
-// What is kept per pair is the neighbour's index alone; r_ij, W and F are worked out from the
-// positions as a stage reads the pair (for_each is inlined into each stage, so a stage that
-// reads only F pays for no W). Measured on the Tait tank with screens (docs/performance.md, "The
-// pair layer"): keeping W and F per pair as well cost 20 bytes a Verlet slot (700 B a particle)
-// and did not run faster (probably because the pair data then no longer fit the cache beside the
-// particles; not measured further).
-//
+// What is kept per pair is the neighbour's index and the kernel's W and F, worked out once in the
+// build; r_ij is worked out from the positions as a stage reads the pair. An ISPH step reads each
+// set of pairs in three to four stages, each of which evaluated the kernel (a square root and its
+// polynomial) before. Measured (docs/performance.md, "The lagged multigrid and the stored kernel"):
+// on the machine of 2026-12-05 (2 MiB of L2 a core) the step of the Tait tank with screens ran
+// 4-12% faster for 16 bytes a Verlet slot; on the machine of 2026-12-04 (512 KiB of L2) the same
+// idea ran no faster, probably because the pair data then no longer fit the cache.
+
 // Order: a row keeps the order of its Verlet row, so every sum over pairs adds the same terms
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
 // stage that used to visit the skin's pairs added exact zeros for them (W = F = 0 for q >= 2),
@@ -60,6 +61,8 @@ class PairList {
     const double reach2 = cubic_ ? kernel_reach2(cubic_spline_) : kernel_reach2(wendland_);
     end_.resize(n);
     j_.resize(nl.total_pairs());
+    w_.resize(nl.total_pairs());
+    f_.resize(nl.total_pairs());
     if (n == 0) return;
     const std::uint32_t* index = nl.begin(0);
 #pragma omp parallel for schedule(static)
@@ -73,12 +76,17 @@ class PairList {
       // Without a branch on the cut-off (a third of the Verlet row is skin, in no predictable
       // order): every candidate is written at `out`, which moves on only for a pair within the
       // support (out <= s, so a row never overruns its Verlet slots).
+      // r^2 waits in w_ for fill_kernel.
       for (std::size_t s = nl.offset(i); s < nl.offset(i + 1); ++s) {
         const std::uint32_t j = index[s];
+        const double r2 = norm2(ri - x[j]);
         j_[out] = j;
-        out += norm2(ri - x[j]) <= reach2 ? 1 : 0;
+        w_[out] = r2;
+        out += r2 <= reach2 ? 1 : 0;
       }
       end_[i] = out;
+      if (cubic_) fill_kernel(cubic_spline_, i, out);
+      else fill_kernel(wendland_, i, out);
     }
   }
 
@@ -92,8 +100,7 @@ class PairList {
   // Calls body(const Pair&) for each pair of row i, in the row's order.
   template <class Body>
   void for_each(std::size_t i, Body&& body) const {
-    if (cubic_) row(cubic_spline_, i, body);
-    else row(wendland_, i, body);
+    row(i, body);
   }
 
   // W(0): a particle's own share of a kernel sum.
@@ -101,19 +108,33 @@ class PairList {
   std::size_t count(std::size_t i) const { return end_[i] - nl_->offset(i); }
   std::size_t rows() const { return end_.size(); }
   std::size_t memory_bytes() const {
-    return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t);
+    return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t) +
+           (w_.capacity() + f_.capacity()) * sizeof(double);
   }
 
  private:
-  template <class K, class Body>
-  void row(const K& kernel, std::size_t i, Body& body) const {
+  // W and F of row i's kept pairs, slots [nl.offset(i), end), from the r^2 the filter left in w_:
+  // once per build for every stage (a loop without gathers, which the compiler vectorises).
+  template <class K>
+  void fill_kernel(const K& kernel, std::size_t i, std::size_t end) {
+    double* w = w_.data();
+    double* f = f_.data();
+#pragma omp simd
+    for (std::size_t s = nl_->offset(i); s < end; ++s) {
+      double ws, fs;
+      kernel.w_and_gradient(std::sqrt(w[s]), ws, fs);
+      w[s] = ws;
+      f[s] = fs;
+    }
+  }
+
+  template <class Body>
+  void row(std::size_t i, Body& body) const {
     const std::vector<Vec2>& x = *x_;
     const Vec2 ri = x[i];
     for (std::size_t s = nl_->offset(i); s < end_[i]; ++s) {
       const std::uint32_t j = j_[s];
-      Pair q{j, ri - x[j], 0.0, 0.0};
-      kernel.w_and_gradient(std::sqrt(q.r2()), q.w, q.f);
-      body(q);
+      body(Pair{j, ri - x[j], w_[s], f_[s]});
     }
   }
 
@@ -125,6 +146,7 @@ class PairList {
   double self_w_ = 0.0;
   std::vector<std::size_t> end_;  // row i's pairs: slots [nl.offset(i), end_[i])
   std::vector<std::uint32_t> j_;
+  std::vector<double> w_, f_;  // W and F of the pair in the same slot
 };
 
 }  // namespace sloshsph
