@@ -97,7 +97,9 @@ BENCHMARK(WcsphStepTait)->Unit(benchmark::kMillisecond)->UseRealTime();
 // takes two steps, and each timed stage then runs on a fresh copy of them (the copy and the build
 // of the pairs the stage reads are not timed; StagePairs times that build alone, at r*) with the
 // solver data of the last step. The pressure solve starts from the pressures before that
-// step, as the step did, so its Krylov iterations are the step's.
+// step, as the step did, so its Krylov iterations are the step's; its multigrid hierarchy is kept
+// from call to call as a step keeps it (the same rows, at most 20 uses, docs/physics.md), so the
+// timed solves build it about once in 21, where a sloshing run builds it about once in ten steps.
 struct StageBench {
   CaseSpec spec;
   Particles particles, pressures_before;

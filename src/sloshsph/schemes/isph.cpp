@@ -194,11 +194,19 @@ void predict_velocity(const Particles& p, const PairList& pairs, const StepInput
   }
 }
 
-// Eq. 2.11 for fluid; walls stay where they are.
-void predict_position(const Particles& p, double dt, IsphData& d) {
+// Eq. 2.11 for fluid; walls stay where they are, and carry u*_w = u_w + dt (g - a_w) (see
+// density_and_ppe_source), worked out here once per wall particle instead of once per pair.
+void predict_position(const Particles& p, const StepInput& in, IsphData& d) {
+  const double dt = in.dt;
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < p.size(); ++i)
-    d.position_star[i] = p.is_fluid(i) ? p.position[i] + dt * d.velocity_star[i] : p.position[i];
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.is_fluid(i)) {
+      d.position_star[i] = p.position[i] + dt * d.velocity_star[i];
+      continue;
+    }
+    d.position_star[i] = p.position[i];
+    d.velocity_star[i] = p.velocity[i] + dt * (in.frame.at(p.position[i], Vec2{}) - p.wall_acceleration(i));
+  }
 }
 
 // Kernel-summed density at r*, the free-surface flag and the right-hand side of the
@@ -229,9 +237,7 @@ void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput
       const std::size_t j = q.j;
       wsum += q.w;
       if (!p.is_fluid(j)) wall_sum += q.w;
-      const Vec2 uj = p.is_fluid(j) ? d.velocity_star[j]
-                                    : p.velocity[j] + dt * (in.frame.at(p.position[j], Vec2{}) - p.wall_acceleration(j));
-      div += V * q.f * dot(uj - ui, q.rij);
+      div += V * q.f * dot(d.velocity_star[j] - ui, q.rij);  // walls: u*_w of predict_position
     });
     const double rho_star = m * wsum;
     p.density[i] = rho_star;
@@ -555,7 +561,7 @@ void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
       static const std::vector<double> none;
       predict_velocity(p, d.pairs, in, nu_, eta2_, scheme_.turbulence,
                        scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
-      predict_position(p, in.dt, d);
+      predict_position(p, in, d);
       break;
     }
     case IsphStage::density_and_ppe_source:
