@@ -77,6 +77,7 @@ std::size_t IsphData::memory_bytes() const {
          ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
          ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
          krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2) +
+         multigrid_rows.capacity() * sizeof(std::uint32_t) +
          pairs.memory_bytes();
 }
 
@@ -390,7 +391,7 @@ KrylovReport IsphScheme::solve_ppe_system(bool multigrid) {
 // How many steps one multigrid hierarchy may serve. Its aggregates and coarse operators then come
 // from a matrix up to this many steps old; the fine level (smoother, residuals, restriction
 // weights) is always this step's. Measured on the Tait tank with screens (docs/performance.md,
-// "The lagged multigrid and the stored kernel"): kept until the next neighbour-list rebuild
+// "The kept multigrid hierarchy and the stored kernel"): kept until the next neighbour-list rebuild
 // (about 10 steps in sloshing, up to 50 from rest) the mean BiCGSTAB iterations did not change
 // (3.40 against 3.41 over 2 s), and building the hierarchy had been 15% of a step. The cap bounds
 // the age in still water, where the neighbour list is rarely rebuilt.

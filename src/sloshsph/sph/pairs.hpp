@@ -11,11 +11,13 @@
 // What is kept per pair is the neighbour's index and the kernel's W and F, worked out once in the
 // build; r_ij is worked out from the positions as a stage reads the pair. An ISPH step reads each
 // set of pairs in three to four stages, each of which evaluated the kernel (a square root and its
-// polynomial) before. Measured (docs/performance.md, "The lagged multigrid and the stored kernel"):
-// on the machine of 2026-12-05 (2 MiB of L2 a core) the step of the Tait tank with screens ran
-// 4-12% faster for 16 bytes a Verlet slot; on the machine of 2026-12-04 (512 KiB of L2) the same
-// idea ran no faster, probably because the pair data then no longer fit the cache.
-
+// polynomial) before. Measured (docs/performance.md, "The kept multigrid hierarchy and the stored
+// kernel"): on the machine of 2026-12-05 (2 MiB of L2 a core) the stages that read the pairs fell
+// to 25-45% of their time and the build rose 3-fold, for 16 bytes a Verlet slot; the step of the
+// Tait tank with screens ran 15% faster (3.20 against 3.76 ms, min of 5 alternated, one thread).
+// On the machine of 2026-12-04 (512 KiB of L2) the same idea had run no faster, probably because
+// the pair data then no longer fit the cache.
+//
 // Order: a row keeps the order of its Verlet row, so every sum over pairs adds the same terms
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
 // stage that used to visit the skin's pairs added exact zeros for them (W = F = 0 for q >= 2),
