@@ -350,6 +350,8 @@ double IsphScheme::assemble_ppe_row(const Particles& p, const StepInput& in, std
   std::size_t slot = A.slot_begin[row] + 1;
   double diag = 0.0;
   double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;
+  // A wall row's g - a_w (moving walls), once per row rather than once per pair.
+  const Vec2 wall_body_force = p.is_fluid(i) ? Vec2{} : in.frame.at(ri, Vec2{}) - p.wall_acceleration(i);
   d.pairs.for_each(i, [&](const Pair& q) {
     const std::size_t j = q.j;
     const PpeNeighbour kind = ppe_neighbour(p, i, j, ri, q.rij);
@@ -364,7 +366,7 @@ double IsphScheme::assemble_ppe_row(const Particles& p, const StepInput& in, std
       }
     } else {
       coef = q.w;
-      rhs += dot(in.frame.at(ri, Vec2{}) - p.wall_acceleration(i), q.rij) * rho0_ * coef;  // moving walls: g - a_w
+      rhs += dot(wall_body_force, q.rij) * rho0_ * coef;
     }
     if (coef == 0.0) return;
     diag += coef;
