@@ -408,14 +408,12 @@ bool IsphScheme::can_keep_multigrid() const {
 }
 
 // The assembled system solved with its preconditioner: the multigrid built for it first, or kept
-// from an earlier step (may_keep_hierarchy and can_keep_multigrid).
-KrylovReport IsphScheme::solve_assembled_ppe(bool multigrid, bool may_keep_hierarchy) {
+// from an earlier step (keep_hierarchy, which the caller sets from can_keep_multigrid).
+KrylovReport IsphScheme::solve_assembled_ppe(bool multigrid, bool keep_hierarchy) {
   IsphData& d = data_;
-  d.multigrid_kept = false;
-  if (multigrid && may_keep_hierarchy && can_keep_multigrid()) {
+  if (multigrid && keep_hierarchy) {
     refresh_fine_diagonal(d.ppe_matrix, d.multigrid);
     ++d.multigrid_age;
-    d.multigrid_kept = true;
   } else if (multigrid) {
     const std::size_t rows = d.ppe_particle.size();
     d.ppe_row_position.resize(rows);
@@ -501,9 +499,10 @@ void IsphScheme::solve_pressure_implicit(Particles& p, const StepInput& in) {
   diagnostics_.pinned_particles = 0;
   assemble_ppe(p, in);
   const bool multigrid = scheme_.preconditioner == Preconditioner::multigrid;
-  KrylovReport report = solve_assembled_ppe(multigrid, true);
+  const bool kept = multigrid && can_keep_multigrid();
+  KrylovReport report = solve_assembled_ppe(multigrid, kept);
   int iterations = report.iterations;
-  if (!report.converged && d.multigrid_kept) {
+  if (!report.converged && kept) {
     // A kept hierarchy that no longer preconditions well enough: built anew for this matrix, and
     // the solve started again from p(t).
     for (std::size_t row = 0; row < d.ppe_particle.size(); ++row) d.ppe_solution[row] = p.pressure[d.ppe_particle[row]];

@@ -46,7 +46,6 @@ struct IsphData {
   std::vector<std::uint32_t> multigrid_rows;  // ppe_particle when the hierarchy was built
   std::uint64_t multigrid_neighbour_builds = 0;  // the neighbour list's build count then
   std::uint32_t multigrid_age = 0;            // steps that have used it since
-  bool multigrid_kept = false;                // this step's solve used a kept hierarchy
   // The pairs within the kernel's support, built at r(t) at the start of a step and again at r*
   // after the prediction (sph/pairs.hpp).
   PairList pairs;
@@ -94,7 +93,7 @@ class IsphScheme {
   std::size_t pin_unanchored_blocks(const Particles& p);
   double assemble_ppe_row(const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
   KrylovReport solve_ppe_system(bool multigrid);
-  KrylovReport solve_assembled_ppe(bool multigrid, bool may_keep_hierarchy);
+  KrylovReport solve_assembled_ppe(bool multigrid, bool keep_hierarchy);
   bool can_keep_multigrid() const;
   void update_neighbours(Particles& p);
   double clip(double pressure) const;

@@ -203,10 +203,8 @@ std::size_t Multigrid::memory_bytes() const {
 bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, double cell, Multigrid& mg) {
   mg.ready = false;
   const std::size_t n = A.rows();
-  std::vector<double>& inverse_diagonal = mg.fine_inverse_diagonal;
-  inverse_diagonal.resize(n);
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (std::size_t i = 0; i < n; ++i) inverse_diagonal[i] = A.inverse_diagonal(i);
+  refresh_fine_diagonal(A, mg);
+  const std::vector<double>& inverse_diagonal = mg.fine_inverse_diagonal;
   if (n <= mg.options.coarsest_rows || !(cell > 0.0)) return false;
   mg.fine_cell_x.resize(n);
   mg.fine_cell_y.resize(n);
