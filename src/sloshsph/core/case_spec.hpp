@@ -109,6 +109,10 @@ enum class Preconditioner { jacobi, multigrid };
 //          carry the small pressure of their depth (docs/physics.md, "Free surface").
 enum class FreeSurfaceModel { air, thesis };
 
+// Particle shifting: none (the seeds); Fickian shifting after Lind et al. (2012) for ISPH; the
+// particle shifting technique of delta-plus-SPH (Sun et al. 2017) for WCSPH.
+enum class ShiftingModel { none, lind, delta_plus };
+
 struct SchemeSpec {
   std::string type = "isph";
   double alpha = 0.01;                   // PPE blending factor (thesis eq. 2.13)
@@ -127,6 +131,10 @@ struct SchemeSpec {
   bool repulsive_walls = false;
   double repulsive_coefficient = 1.0;    // D = coefficient g H_w
   double repulsive_range = 0.5;          // r0 / h (eq. 3.18: h_k / 2)
+  // Particle shifting after each step (physics/shifting.hpp): ISPH "lind", WCSPH "delta_plus".
+  ShiftingModel shifting = ShiftingModel::none;
+  double shifting_coefficient = 2.0;     // ISPH: A of D = A h |u| dt
+  double shifting_max = 0.2;             // the longest shift of a step, a fraction of dp
   // Both schemes: stop fluid particles at the tank walls (physics/wall_contact.hpp).
   bool wall_contact = true;
   WcsphSpec wcsph;                       // used when type = "wcsph"

@@ -126,6 +126,9 @@ void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.repulsive_walls = r.boolean("repulsive_walls", s.repulsive_walls);  // thesis eq. 3.18
   s.repulsive_coefficient = r.in_range("repulsive_coefficient", s.repulsive_coefficient, 0.0, 100.0);
   s.repulsive_range = r.in_range("repulsive_range", s.repulsive_range, 0.05, 2.0);
+  s.shifting = r.choice("shifting", "none", {"none", "lind"}) == "lind" ? ShiftingModel::lind : ShiftingModel::none;
+  s.shifting_coefficient = r.in_range("shifting_coefficient", s.shifting_coefficient, 0.1, 10.0);
+  s.shifting_max = r.in_range("shifting_max", s.shifting_max, 0.01, 0.5);
 }
 
 void read_wcsph_keys(TableReader& r, SchemeSpec& s) {
@@ -146,6 +149,9 @@ void read_wcsph_keys(TableReader& r, SchemeSpec& s) {
   w.integrator = r.choice("integrator", "symplectic", {"symplectic", "leapfrog"}) == "leapfrog" ? Integrator::leapfrog
                                                                                                : Integrator::symplectic;
   w.cfl = r.in_range("cfl", w.cfl, 0.01, 1.0);
+  s.shifting = r.choice("shifting", "none", {"none", "delta_plus"}) == "delta_plus" ? ShiftingModel::delta_plus
+                                                                                   : ShiftingModel::none;
+  s.shifting_max = r.in_range("shifting_max", s.shifting_max, 0.01, 0.5);
 }
 
 SchemeSpec read_scheme(TableReader& r) {
@@ -781,6 +787,9 @@ static toml::table scheme_table(const SchemeSpec& x) {
     t.insert("repulsive_walls", x.repulsive_walls);
     t.insert("repulsive_coefficient", x.repulsive_coefficient);
     t.insert("repulsive_range", x.repulsive_range);
+    t.insert("shifting", x.shifting == ShiftingModel::lind ? "lind" : "none");
+    t.insert("shifting_coefficient", x.shifting_coefficient);
+    t.insert("shifting_max", x.shifting_max);
     return t;
   }
   const WcsphSpec& w = x.wcsph;
@@ -798,6 +807,8 @@ static toml::table scheme_table(const SchemeSpec& x) {
   t.insert("walls", w.walls == WallTreatment::repulsive ? "repulsive" : "adami");
   t.insert("integrator", w.integrator == Integrator::leapfrog ? "leapfrog" : "symplectic");
   t.insert("cfl", w.cfl);
+  t.insert("shifting", x.shifting == ShiftingModel::delta_plus ? "delta_plus" : "none");
+  t.insert("shifting_max", x.shifting_max);
   return t;
 }
 

@@ -414,6 +414,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["wall_particles"] = p.n_wall();
   s["leaked_particles"] = sim.leaked();
   s["wall_contacts"] = sim.wall_contacts();
+  if (sim.spec().scheme.shifting != ShiftingModel::none) s["shifts_limited"] = sim.shifts_limited();
   s["pressure_pinned"] = {{"steps", sim.pinned_steps()},
                           {"particles", sim.pinned_particles()},
                           {"counted_since_s", counted_since}};  // this process's start (not in checkpoints)

@@ -161,6 +161,8 @@ void Simulation::build_columns() {
   add_column("dt", "s", [](S s, B) { return s.last_dt_; });
   add_column("ppe_iterations", "1", [](S s, B) { return static_cast<double>(s.scheme_.diagnostics().solver_iterations); });
   add_column("wall_contacts", "1", [](S s, B) { return static_cast<double>(s.wall_contacts_); });
+  if (spec_.scheme.shifting != ShiftingModel::none)
+    add_column("shifts_limited", "1", [](S s, B) { return static_cast<double>(s.shifts_limited_); });
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     const std::string& n = plates_[k].spec().name;
     auto force = [k](S s) { return s.acc_dt_ > 0.0 ? s.acc_plate_force_[k] / s.acc_dt_ : s.plates_[k].last_force(); };
@@ -321,6 +323,7 @@ void Simulation::step() {
     sloshing_force_ = wall_force.x - fluid_mass() * mid.acceleration.x;
     acc_tld_force_ += dt * structure_->tld_force(wall_force.x, mid.acceleration.x);
   }
+  shifts_limited_ += scheme_.diagnostics().shifts_limited;
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
   acc_base_acceleration_ += dt * mid.acceleration.x;
@@ -500,6 +503,8 @@ void Simulation::save_state(StateWriter& w) const {
   w.array("sim.gauge_datum", gauge_datum_);
   w.array("sim.leaks", leaks_);
   w.value("sim.wall_contacts", static_cast<std::uint64_t>(wall_contacts_));
+  if (spec_.scheme.shifting != ShiftingModel::none)
+    w.value("sim.shifts_limited", static_cast<std::uint64_t>(shifts_limited_));
   w.value("sim.acc_dt", acc_dt_);
   w.value("sim.acc_wall_force", acc_wall_force_);
   w.value("sim.acc_base_acceleration", acc_base_acceleration_);
@@ -525,6 +530,8 @@ void Simulation::load_state(StateReader& r) {
   gauge_datum_ = r.array<double>("sim.gauge_datum");
   leaks_ = r.array<LeakRecord>("sim.leaks");
   wall_contacts_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.wall_contacts"));
+  if (spec_.scheme.shifting != ShiftingModel::none)
+    shifts_limited_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.shifts_limited"));
   acc_dt_ = r.value<double>("sim.acc_dt");
   acc_wall_force_ = r.value<Vec2>("sim.acc_wall_force");
   acc_base_acceleration_ = r.value<double>("sim.acc_base_acceleration");

@@ -98,6 +98,7 @@ class Simulation {
   std::size_t leaked() const { return leaks_.size(); }
   // Fluid particles stopped at the tank walls since t = 0 (scheme.wall_contact).
   std::size_t wall_contacts() const { return wall_contacts_; }
+  std::size_t shifts_limited() const { return shifts_limited_; }
   // Implicit PPE: steps in which a block of fluid that no p = 0 condition reaches was set to p = 0
   // (IsphScheme::pin_unanchored_blocks), and its particles summed over those steps; counted since
   // this object was made (a resumed run counts from the resume: not kept in checkpoints, so that
@@ -153,6 +154,7 @@ class Simulation {
   std::vector<double> gauge_datum_;      // surface height of each gauge at t = 0
   std::vector<LeakRecord> leaks_;
   std::size_t wall_contacts_ = 0;
+  std::size_t shifts_limited_ = 0;  // scheme.shifting: shifts cut by their cap or a wall, over the run
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;
   // Accumulated over the steps since the last sample (forces are interval means).

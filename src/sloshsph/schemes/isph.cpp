@@ -67,7 +67,12 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
         const double r2 = dp * dp * (a * a + b * b);
         lambda_full_ += laplacian_weight(dp * dp, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
       }
+    shifting_.w_dp = k.w(dp);
   });
+  shifting_.coefficient = spec.scheme.shifting_coefficient;
+  shifting_.h = h;
+  shifting_.dp = dp_;
+  shifting_.max_shift = spec.scheme.shifting_max * dp_;
 }
 
 std::size_t IsphData::memory_bytes() const {
@@ -77,7 +82,7 @@ std::size_t IsphData::memory_bytes() const {
          ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
          ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
          krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2) +
-         multigrid_rows.capacity() * sizeof(std::uint32_t) +
+         multigrid_rows.capacity() * sizeof(std::uint32_t) + shifting.memory_bytes() +
          pairs.memory_bytes();
 }
 
@@ -274,6 +279,16 @@ void correct_and_advance(Particles& p, const PairList& pairs, double dt, double 
     p.position[i] += 0.5 * dt * (d.velocity_old[i] + u_new);
     p.velocity[i] = u_new;
   }
+}
+
+// Particle shifting at the end of the step (physics/shifting.hpp: Lind et al. 2012,
+// D = A h |u_i| dt), with the pairs at r*, which the step's last motion moved by
+// dt (u(t+dt) - u*)/2, a small fraction of dp, and the free-surface flags of stage 5 (1: surface,
+// 2: spray). Returns how many shifts were cut.
+std::size_t shift_particles(Particles& p, const PairList& pairs, const ShiftingRule& rule, double dt, IsphData& d) {
+  const double scale = rule.coefficient * rule.h * dt;
+  return shift_fluid(p, pairs, d.free_surface, rule, [&](std::size_t i) { return scale * norm(p.velocity[i]); },
+                     nullptr, d.shifting);
 }
 
 }  // namespace
@@ -549,7 +564,7 @@ void IsphScheme::solve_pressure_implicit(Particles& p, const StepInput& in) {
 // The pairs each stage reads: those at r(t) before the prediction, at r* from the density on.
 bool IsphScheme::reads_pairs_at_r_star(IsphStage stage) {
   return stage == IsphStage::density_and_ppe_source || stage == IsphStage::pressure_solve ||
-         stage == IsphStage::correct_and_advance;
+         stage == IsphStage::correct_and_advance || stage == IsphStage::shift;
 }
 
 void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
@@ -575,6 +590,9 @@ void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
       break;
     case IsphStage::correct_and_advance:
       correct_and_advance(p, d.pairs, in.dt, rho0_, d);
+      break;
+    case IsphStage::shift:
+      diagnostics_.shifts_limited = shift_particles(p, d.pairs, shifting_, in.dt, d);
       break;
   }
 }
@@ -603,6 +621,8 @@ void IsphScheme::step(Particles& p, const StepInput& in) {
   stage(IsphStage::density_and_ppe_source, p, in);                  // eqs. 2.12, 2.13, 2.20
   stage(IsphStage::pressure_solve, p, in);                          // eqs. 2.18 or 2.13, 2.19
   stage(IsphStage::correct_and_advance, p, in);                     // eqs. 2.14, 2.15
+  diagnostics_.shifts_limited = 0;
+  if (scheme_.shifting == ShiftingModel::lind) stage(IsphStage::shift, p, in);  // Lind et al. 2012
 
   // Diagnostics, reduced in a fixed order so they do not depend on the thread count.
   Vec2 wall{};

@@ -14,6 +14,7 @@
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/schemes/ppe_multigrid.hpp"
 #include "sloshsph/schemes/ppe_solver.hpp"
+#include "sloshsph/physics/shifting.hpp"
 #include "sloshsph/physics/turbulence.hpp"
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
@@ -49,12 +50,13 @@ struct IsphData {
   // The pairs within the kernel's support, built at r(t) at the start of a step and again at r*
   // after the prediction (sph/pairs.hpp).
   PairList pairs;
+  ShiftingWork shifting;  // scheme.shifting (physics/shifting.hpp)
   void resize(std::size_t n);
   std::size_t memory_bytes() const;
 };
 
 // The stages of IsphScheme::step after the wall velocities, in their order.
-enum class IsphStage { sps_stress, predict, density_and_ppe_source, pressure_solve, correct_and_advance };
+enum class IsphStage { sps_stress, predict, density_and_ppe_source, pressure_solve, correct_and_advance, shift };
 
 class IsphScheme {
  public:
@@ -116,6 +118,7 @@ class IsphScheme {
   double still_depth_ = 0.0;  // fill depth above the lowest point
   double gravity_ = 0.0;
   std::vector<double> repulsion_strength_;
+  ShiftingRule shifting_;  // scheme.shifting = "lind"
   IsphData data_;
   StepDiagnostics diagnostics_;
 };

@@ -30,6 +30,7 @@ struct StepDiagnostics {
   double solver_residual = 0.0;  // implicit PPE, relative
   std::size_t pinned_particles = 0;  // implicit PPE: fluid of blocks no p = 0 reaches, set to p = 0
   bool neighbours_rebuilt = false;
+  std::size_t shifts_limited = 0;    // scheme.shifting: shifts cut by the length cap or a wall
 };
 
 }  // namespace sloshsph

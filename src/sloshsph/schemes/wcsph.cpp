@@ -69,6 +69,11 @@ WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
   }
   if (!(spec_.cfl > 0.0))
     throw InputError(spec.where("scheme.cfl"), "scheme.cfl", "must be positive");
+  shifting_on_ = spec.scheme.shifting == ShiftingModel::delta_plus;
+  shifting_.h = h;
+  shifting_.dp = dp_;
+  shifting_.max_shift = spec.scheme.shifting_max * dp_;
+  shifting_.w_dp = with_kernel(kernel_type_, h, [&](const auto& k) { return k.w(dp_); });
 }
 
 std::size_t WcsphScheme::memory_bytes() const {
@@ -78,7 +83,7 @@ std::size_t WcsphScheme::memory_bytes() const {
                                 sizeof(SymTensor2);
   return n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
          (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) + repulsive_.capacity() +
-         neighbours_.memory_bytes() + d.pairs.memory_bytes();
+         neighbours_.memory_bytes() + d.pairs.memory_bytes() + d.surface.capacity() + d.shifting.memory_bytes();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -129,11 +134,13 @@ void WcsphScheme::update_neighbours(Particles& p, double dt, const FrameForce& f
   bool rebuild = neighbours_.stale(p.position, p.n_fluid) || d.position_at_build.size() != p.n_fluid;
   if (!rebuild) {
     const double limit = 0.5 * neighbours_.skin();
+    const double shift_reach = shifting_on_ ? shifting_.max_shift : 0.0;  // the shift at the end of the step
     bool far = false;
 #pragma omp parallel for reduction(|| : far) schedule(static)
     for (std::size_t i = 0; i < p.n_fluid; ++i) {
       const Vec2 a = d.acceleration[i] + frame.at(p.position[i], p.velocity[i]);
-      const double reach = norm(p.position[i] - d.position_at_build[i]) + dt * (norm(p.velocity[i]) + norm(d.xsph[i]) + dt * norm(a));
+      const double reach = norm(p.position[i] - d.position_at_build[i]) + dt * (norm(p.velocity[i]) + norm(d.xsph[i]) + dt * norm(a)) +
+                           shift_reach;
       far = far || reach > limit;
     }
     rebuild = far;
@@ -485,13 +492,14 @@ void WcsphScheme::step_leapfrog(Particles& p, const StepInput& in) {
 
 // Pressures of the new densities, the Shepard re-normalisation when due (Shao eqs. 10-11,
 // every shepard_interval steps), wall values at the new positions (for output), diagnostics.
-void WcsphScheme::finish_step(Particles& p, const FrameForce& frame) {
+void WcsphScheme::finish_step(Particles& p, const StepInput& in) {
+  const FrameForce& frame = in.frame;
   ++steps_;
   fluid_pressure(p);
-  // The pairs at the new positions: the Shepard filter reads the fluid's rows, the wall values
-  // only the walls'.
+  // The pairs at the new positions: the Shepard filter and the shift read the fluid's rows, the
+  // wall values only the walls'.
   const bool shepard = spec_.shepard_interval > 0 && steps_ % spec_.shepard_interval == 0;
-  build_pairs(p, shepard ? 0 : p.n_fluid);
+  build_pairs(p, shepard || shifting_on_ ? 0 : p.n_fluid);
   if (shepard) {
     wall_values(p, frame);
     shepard_density(p, data_.pairs, data_.scratch);
@@ -501,6 +509,15 @@ void WcsphScheme::finish_step(Particles& p, const FrameForce& frame) {
   wall_values(p, frame);
   double vmax2 = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) vmax2 = std::max(vmax2, norm2(p.velocity[i]));
+  diagnostics_.shifts_limited = 0;
+  if (shifting_on_) {
+    diagnostics_.shifts_limited = shift(p, in.dt, std::sqrt(vmax2));
+    fluid_pressure(p);
+    build_pairs(p, p.n_fluid);  // the walls' rows at the shifted positions
+    wall_values(p, frame);
+    vmax2 = 0.0;
+    for (std::size_t i = 0; i < p.n_fluid; ++i) vmax2 = std::max(vmax2, norm2(p.velocity[i]));
+  }
   diagnostics_.max_speed = std::sqrt(vmax2);
   diagnostics_.free_surface = 0;
   diagnostics_.solver_iterations = 0;
@@ -516,7 +533,35 @@ void WcsphScheme::step(Particles& p, const StepInput& in) {
   if (!have_rates) evaluate(p, in.frame);  // first step without initialise(), or new particles
   if (spec_.integrator == Integrator::leapfrog) step_leapfrog(p, in);
   else step_symplectic(p, in);
-  finish_step(p, in.frame);
+  finish_step(p, in);
+}
+
+// The shift of delta-plus-SPH (physics/shifting.hpp; Sun et al. 2017): D = CFL Ma (2h)^2 with
+// CFL = c0 dt / h and Ma = U_max / c0, i.e. 4 h U_max dt for every particle, on the pairs at the
+// end of the step. The free surface is found as in the ISPH scheme (thesis eq. 2.20 with its
+// spray fraction), from the kernel sums of the nominal volume dp^2: surface below 0.9 of a full
+// kernel's sum, spray where fluid fills less than half the part of the kernel that walls leave
+// free (Sun et al. detect it from the eigenvalues of the renormalisation matrix instead; not done).
+std::size_t WcsphScheme::shift(Particles& p, double dt, double max_speed) {
+  WcsphData& d = data_;
+  const PairList& pairs = d.pairs;
+  const double full = p.volume * lattice_number_density(kernel_type_, h_, dp_);  // C of a full kernel
+  d.surface.assign(p.n_fluid, kShiftInterior);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    double sum = pairs.self_w(), wall_sum = 0.0;
+    pairs.for_each(i, [&](const Pair& q) {
+      sum += q.w;
+      if (!p.is_fluid(q.j)) wall_sum += q.w;
+    });
+    sum *= p.volume;
+    wall_sum *= p.volume;
+    const double fluid_fraction = (sum - wall_sum) / std::max(full - wall_sum, 0.25 * full);
+    d.surface[i] = fluid_fraction < 0.5 ? kShiftSpray : sum < 0.9 * full ? kShiftSurface : kShiftInterior;
+  }
+  const double diffusion = 4.0 * h_ * max_speed * dt;
+  return shift_fluid(p, pairs, d.surface, shifting_, [diffusion](std::size_t) { return diffusion; }, &p.density,
+                     d.shifting);
 }
 
 double WcsphScheme::stable_dt(const Particles& p, const FrameForce& frame) const {

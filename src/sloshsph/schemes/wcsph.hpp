@@ -26,6 +26,7 @@
 #include "sloshsph/core/state_io.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/physics/kernel_correction.hpp"
+#include "sloshsph/physics/shifting.hpp"
 #include "sloshsph/schemes/isph.hpp"  // SymTensor2, lattice_number_density
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
@@ -54,6 +55,9 @@ struct WcsphData {
   std::vector<Vec2> wall_acceleration; // part of du/dt due to wall particles (base shear), fluid
   std::vector<double> scratch;         // Shepard densities
   PairList pairs;  // within the kernel's support at the positions of the current evaluation
+  // scheme.shifting = "delta_plus": the free-surface flags of the shift and its scratch.
+  std::vector<std::uint8_t> surface;
+  ShiftingWork shifting;
 
   void resize_fluid(std::size_t n_fluid);
   void resize_all(std::size_t n);
@@ -100,7 +104,8 @@ class WcsphScheme {
   void step_leapfrog(Particles& p, const StepInput& in);
   void evaluate(Particles& p, const FrameForce& frame);
   void wall_values(Particles& p, const FrameForce& frame);
-  void finish_step(Particles& p, const FrameForce& frame);
+  void finish_step(Particles& p, const StepInput& in);
+  std::size_t shift(Particles& p, double dt, double max_speed);
   void update_neighbours(Particles& p, double dt, const FrameForce& frame);
   bool sync_state(const Particles& p);
   void fluid_pressure(Particles& p) const;
@@ -123,6 +128,8 @@ class WcsphScheme {
   std::string tank_where_;
   std::vector<std::uint8_t> repulsive_;  // per wall particle (index w - n_fluid): first layer
   NeighbourList neighbours_;
+  bool shifting_on_ = false;  // scheme.shifting = "delta_plus"
+  ShiftingRule shifting_;
   WcsphData data_;
   StepDiagnostics diagnostics_;
 };
