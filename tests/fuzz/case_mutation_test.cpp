@@ -94,6 +94,7 @@ const std::vector<std::string> kTomlFragments = {
     "[[screens]]\nname = \"s8\"\nfrom = [0.1, 0.0]\nto = [0.3, 0.2]\nmodel = \"explicit\"\nslat_height = 0.005\nslat_gap = 0.007\n",
     "[[probes.gauge]]\nname = \"g9\"\nx = 0.1\n", "[[probes.pressure]]\nname = \"p9\"\nx = 0.1\ny = 0.05\n",
     "[[probes.pressure]]\nname = \"p8\"\nx = 0.1\ny = 0.05\nto = [0.1, 0.15]\n",
+    "[[probes.pressure]]\nname = \"p7\"\nx = 0.0\ny = 0.05\nsize = 0.009\n",
     "[structure]\nmass = 100.0\nfrequency = 0.8\ndamping_ratio = 0.02\n",
     "[structure]\nmass = 1e-300\nstiffness = 1e300\ndamping = 0\nground = \"excitation\"\n",
     "[structure.load]\ntype = \"noise\"\ntarget_peak_mg = 10\n",
@@ -237,6 +238,7 @@ const std::vector<std::string> kOverrideKeys = {
     "particles.wall_layers", "time.end", "time.dt", "time.settle", "excitation.type", "excitation.beta",
     "excitation.frequency", "excitation.amplitude", "scheme.type", "screens", "screens.0.x", "screens.0",
     "probes.gauge.0.x", "probes.gauge.99999999999999999999.x", "probes.gauge.0", "probes.pressure.1.y",
+    "probes.pressure.0.size",
     "probes.gauge", "structure.mass", "structure.load.type", "output.sample_interval", "a..b", ".x", "x.",
     "tank.length.x", "fill.depth.0", "0", "0.0", "title"};
 

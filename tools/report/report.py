@@ -261,7 +261,9 @@ def histories_section(rep):
         parts.append("<p>No wave gauges (eta:*) in the time series.</p>")
     if probes:
         parts.append("<h3 id='probes'>Pressure probes</h3>")
-        parts.append(history_figure(rep, probes, "pressure", "Pressure at the probes"))
+        peaks = impact_peaks(run)
+        parts.append(history_figure(rep, probes, "pressure", "Pressure at the probes", extra=impact_marks(peaks)))
+        parts.append(impact_table(rep, peaks))
     if forces:
         parts.append("<h3 id='forces'>Forces</h3>")
         parts.append(history_figure(rep, forces, "forces", "Forces of the walls on the fluid (per metre)",
@@ -295,6 +297,47 @@ def histories_section(rep):
         parts.append(history_figure(rep, other, "other", "Other columns of timeseries.csv", filtered=False,
                                     normalise=False))
     return "".join(parts)
+
+
+def impact_peaks(run):
+    """summary.json `pressure_probes`: {column: probe object} (docs/case-format.md)."""
+    probes = run.summary.get("pressure_probes") if isinstance(run.summary, dict) else None
+    if not isinstance(probes, list):
+        return {}
+    return {p["column"]: p for p in probes if isinstance(p, dict) and "column" in p}
+
+
+def impact_marks(peaks):
+    """Marks each probe's first impact peak (red triangle) and shades its rise and fall."""
+    def draw(ax, name):
+        pk = (peaks.get(name) or {}).get("impact_peak")
+        if pk:
+            ax.axvspan(pk["rise_start_s"], pk["end_s"], color="C3", alpha=0.10, lw=0)
+            ax.plot([pk["peak_time_s"]], [pk["peak_Pa"]], "v", color="C3", ms=6, label="first impact peak")
+    return draw
+
+
+def impact_table(rep, peaks):
+    """The first impact peak of each pressure probe, as summary.json gives it (analysis/impact_peak.hpp)."""
+    if not peaks:
+        return ""
+    rows, info = [], {}
+    for column, probe in peaks.items():
+        face = probe.get("face_length_m") or 0.0
+        where = f"face {fmt(face * 1000)} mm" if face > 0 else "point"
+        pk = probe.get("impact_peak")
+        info[column] = pk
+        if not pk:
+            rows.append([esc(column), esc(where), "no rise above the first sample", "", "", "", ""])
+            continue
+        rows.append([esc(column), esc(where), fmt(pk["peak_Pa"]), fmt(pk["peak_time_s"]), fmt(pk["rise_time_s"]),
+                     fmt(pk["impulse_Pa_s"]), fmt(pk["baseline_Pa"])])
+    rep.analysis["impact_peaks"] = info
+    return ("<p>First impact peak of each probe (red triangle; shaded: from the 10 % level of the rise to the "
+            "end of the peak). Rise time: from 10 % to 90 % of the peak above the first sample p0; impulse: "
+            "∫(p − p0) dt over the shaded interval (docs/physics.md, \"Impact peak\").</p>"
+            + rl.table(["probe", "sensor", "peak (Pa)", "at (s)", "rise time 10–90 % (s)", "impulse (Pa·s)",
+                        "p0 (Pa)"], rows, left_columns=2))
 
 
 def energy_figure(rep):

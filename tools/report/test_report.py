@@ -158,6 +158,12 @@ def make_run(run_dir, status="completed"):
                            "optimum": {"tank_damping_ratio": 0.0405, "effective_damping_ratio": 0.0273},
                            "tank_damping_for_measured_effective_damping": 0.0134},
     }
+    # The pressure probe's first impact peak as sloshsph writes it (run/probe_summary.hpp); the
+    # report shows it as it is.
+    summary["pressure_probes"] = [{
+        "name": "bottom", "column": "p:bottom", "from": [0.2, 0.0955], "to": [0.2, 0.1045], "face_length_m": 0.009,
+        "impact_peak": {"baseline_Pa": 1177.2, "peak_Pa": 1227.2, "peak_time_s": 0.3125, "rise_start_s": 0.02,
+                        "rise_end_s": 0.28, "rise_time_s": 0.26, "end_s": 0.6, "impulse_Pa_s": 17.5}}]
     if status != "completed":
         summary["failure"] = "synthetic failure for the test"
     with open(os.path.join(run_dir, "summary.json"), "w") as fh:
@@ -287,6 +293,8 @@ def test_run_report(tmp):
                                   "diagnostics", "base"], min_images=10)
     check("Synthetic sine &lt;test&gt; &amp; co" in text, "title escaped in the header")
     check("<details>" in text and "Resolved case (case.toml)" in text, "case.toml in a collapsible block")
+    check("<td class=\"l\">face 9 mm</td><td>1227</td><td>0.3125</td><td>0.26</td><td>17.5</td>" in text,
+          "the first impact peak of p:bottom in the page (face 9 mm, 1227 Pa at 0.3125 s, rise 0.26 s, 17.5 Pa s)")
     for stem in ("gauges", "forces", "pressure", "energy", "diagnostics", "base_motion", "hysteresis",
                  "structure", "structure_psd", "admittance", "screen_forces"):
         for ext in ("png", "svg"):
@@ -296,6 +304,7 @@ def test_run_report(tmp):
     a = json.load(open(os.path.join(run_dir, "analysis.json")))
     h = a["harmonic"]
     check(h["cycles_used"] == 10, "10 cycles used")
+    check(a["impact_peaks"]["p:bottom"]["peak_Pa"] == 1227.2, "analysis.json: the impact peak of p:bottom")
     for series in ("raw", "filtered"):
         g = h["signals"]["eta:left"][series]
         near(g["avg_max"], ETA_C + ETA_A, 0.01, f"eta:left {series} avg max")

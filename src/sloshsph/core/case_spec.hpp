@@ -252,6 +252,8 @@ struct PressureProbeSpec {
   Vec2 position;   // m: x from the left wall, y above the lowest point of the bottom
   std::optional<Vec2> face_end;  // m: with it, the probe is a sensor face from `position` to here
                                  // and reads the mean pressure over it (observe/probes.hpp)
+  double size = 0.0;  // m: > 0: a sensor face this long centred on `position`, along the wall nearest
+                      // to it (a transducer's diameter; geometry/scene.cpp); 0: a point (or `face_end`)
 };
 
 // The leading edge of a surge along the floor (dam-break front): the furthest fluid particle

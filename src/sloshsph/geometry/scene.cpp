@@ -11,7 +11,7 @@
 namespace sloshsph {
 namespace {
 
-void check_probes(const CaseSpec& spec, const TankGeometry& tank) {
+void check_gauges(const CaseSpec& spec, const TankGeometry& tank) {
   for (std::size_t k = 0; k < spec.gauges.size(); ++k) {
     const std::string key = "probes.gauge." + std::to_string(k) + ".x";
     const double x = spec.gauges[k].x;
@@ -22,20 +22,53 @@ void check_probes(const CaseSpec& spec, const TankGeometry& tank) {
       throw InputError(spec.where(key), key, m.str());
     }
   }
+}
+
+// A face of length `size` centred on `centre`, along the wall segment nearest to it: where a
+// flush-mounted transducer of that diameter sits (in 2D its face is a segment of the wall).
+PressureSensor face_on_wall(const TankGeometry& tank, Vec2 centre, double size) {
+  const std::size_t k = tank.nearest_segment(centre);
+  const Vec2 along = normalized(tank.wall[k + 1] - tank.wall[k]);
+  return {centre - 0.5 * size * along, centre + 0.5 * size * along, true};
+}
+
+// Resolves each [[probes.pressure]] to where it reads (a point, a face from `to`, or a face of
+// `size` on the nearest wall) and checks that it lies in the tank.
+std::vector<PressureSensor> pressure_sensors(const CaseSpec& spec, const TankGeometry& tank) {
+  std::vector<PressureSensor> sensors;
+  const double dp = spec.particles.dp;
   for (std::size_t k = 0; k < spec.pressure_probes.size(); ++k) {
     const auto& probe = spec.pressure_probes[k];
+    const std::string prefix = "probes.pressure." + std::to_string(k) + ".";
     // A probe may sit on the wall surface or in the first wall layer (thesis 5.5.1), not beyond;
     // so may both ends of a sensor face.
-    const auto outside = [&](Vec2 p) { return tank.signed_distance(p) < -spec.particles.dp || p.y > tank.y_top; };
+    const auto outside = [&](Vec2 p) { return tank.signed_distance(p) < -dp || p.y > tank.y_top; };
     const auto fail = [&](const std::string& field, Vec2 p, const char* what) {
-      const std::string key = "probes.pressure." + std::to_string(k) + "." + field;
       std::ostringstream m;
       m << "pressure probe '" << probe.name << "'" << what << " (" << p.x << ", " << p.y << ") m is outside the tank";
-      throw InputError(spec.where(key), key, m.str());
+      throw InputError(spec.where(prefix + field), prefix + field, m.str());
     };
     if (outside(probe.position)) fail("x", probe.position, " at");
-    if (probe.face_end && outside(*probe.face_end)) fail("to", *probe.face_end, ": the end of its face,");
+    PressureSensor sensor{probe.position, probe.position, false};
+    if (probe.face_end) {
+      sensor = {probe.position, *probe.face_end, true};
+      if (outside(*probe.face_end)) fail("to", *probe.face_end, ": the end of its face,");
+    } else if (probe.size > 0.0) {
+      const double off = tank.distance_to_wall(probe.position);
+      if (off > dp) {
+        std::ostringstream m;
+        m << "pressure probe '" << probe.name << "' at (" << probe.position.x << ", " << probe.position.y << ") m is "
+          << off << " m from the nearest wall: a sensor face ('size') lies on a wall, so (x, y) must be within dp = "
+          << dp << " m of the wall surface (or give the face's ends with 'to')";
+        throw InputError(spec.where(prefix + "size"), prefix + "size", m.str());
+      }
+      sensor = face_on_wall(tank, probe.position, probe.size);
+      for (const Vec2 end : {sensor.from, sensor.to})
+        if (outside(end)) fail("size", end, ": an end of its face along the wall,");
+    }
+    sensors.push_back(sensor);
   }
+  return sensors;
 }
 
 // The thesis free surface (p = 0 on flagged particles) with the implicit solve has run away
@@ -64,10 +97,11 @@ void add_time_step_warnings(const CaseSpec& spec, std::vector<std::string>& warn
 
 Scene build_scene(const CaseSpec& spec) {
   auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));
-  check_probes(spec, *tank);
+  check_gauges(spec, *tank);
 
   Scene scene;
   scene.tank = tank;
+  scene.pressure_sensors = pressure_sensors(spec, *tank);
   add_time_step_warnings(spec, scene.warnings);
   scene.dp = spec.particles.dp;
   scene.h = spec.particles.kernel_ratio * spec.particles.dp;

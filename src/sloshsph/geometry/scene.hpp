@@ -11,6 +11,13 @@
 
 namespace sloshsph {
 
+// Where a pressure probe reads: the point `from` (== `to`), or the mean over the face from
+// `from` to `to` (observe/probes.hpp pressure_on_face).
+struct PressureSensor {
+  Vec2 from, to;
+  bool face = false;
+};
+
 struct Scene {
   std::shared_ptr<const TankGeometry> tank;  // shared: ContainerDistance points into it
   Particles particles;
@@ -25,6 +32,7 @@ struct Scene {
   // are the last wall particles, after the tank walls and the explicit slats.
   std::vector<PlateLayout> plates;
   std::vector<std::size_t> plate_first;
+  std::vector<PressureSensor> pressure_sensors;  // one per [[probes.pressure]], in case order
   std::vector<std::string> warnings;  // set-up remarks for the user (e.g. slats too fine for dp)
 };
 

@@ -269,6 +269,10 @@ void read_probes(TableReader& r, CaseSpec& spec) {
     check_name(p, "name", ps.name, names);
     ps.position = {p.number("x"), p.number("y")};
     ps.face_end = p.optional_point("to");
+    ps.size = p.non_negative("size", 0.0);
+    if (ps.size > 0.0 && ps.face_end)
+      p.fail("size", "give either 'to' (the other end of the face) or 'size' (a face centred on x, y along the "
+                     "wall), not both");
     p.finish();
     spec.pressure_probes.push_back(ps);
   }
@@ -955,6 +959,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
   for (const auto& p : s.pressure_probes) {
     toml::table probe{{"name", p.name}, {"x", p.position.x}, {"y", p.position.y}};
     if (p.face_end) probe.insert("to", toml::array{p.face_end->x, p.face_end->y});
+    if (p.size > 0.0) probe.insert("size", p.size);
     pressures.push_back(probe);
   }
   toml::array fronts;

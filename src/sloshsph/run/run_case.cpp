@@ -22,6 +22,7 @@
 #include "sloshsph/io/csv_writer.hpp"
 #include "sloshsph/io/files.hpp"
 #include "sloshsph/io/vtk_writer.hpp"
+#include "sloshsph/run/probe_summary.hpp"
 #include "sloshsph/run/progress.hpp"
 #include "sloshsph/run/response.hpp"
 #include "sloshsph/run/screen_summary.hpp"
@@ -443,6 +444,9 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   if (nlohmann::json response = analyse_response(spec, sim, series, dir); !response.is_null())
     s["response"] = response;
   if (!sim.screens().elements.empty()) s["screens"] = screens_summary(sim.screens());
+  if (!spec.pressure_probes.empty())
+    s["pressure_probes"] =
+        pressure_probes_summary(spec.pressure_probes, sim.scene().pressure_sensors, column_names(sim), series.columns);
   if (spec.structure && !series.columns.empty()) {
     // RMS and peak response, and for noise loads the admittance and effective damping.
     StructureSeries ss = structure_series(column_names(sim), series.columns);

@@ -21,10 +21,10 @@ namespace {
 
 // A pressure probe's reading: a point, or the mean over its face sampled every dp/4.
 template <class K>
-double read_pressure_probe(const K& k, const Particles& p, const CellGrid& grid, const PressureProbeSpec& probe,
+double read_pressure_probe(const K& k, const Particles& p, const CellGrid& grid, const PressureSensor& sensor,
                            double dp) {
-  if (!probe.face_end) return pressure_at(k, p, grid, probe.position);
-  return pressure_on_face(k, p, grid, probe.position, *probe.face_end, 0.25 * dp);
+  if (!sensor.face) return pressure_at(k, p, grid, sensor.from);
+  return pressure_on_face(k, p, grid, sensor.from, sensor.to, 0.25 * dp);
 }
 
 }  // namespace
@@ -416,9 +416,9 @@ double Simulation::surface_height(std::size_t gauge) const {
 double Simulation::probe_pressure(std::size_t probe) const {
   CellGrid grid;
   grid.build(scene_.particles.position, 0, scene_.particles.size(), 2.0 * scene_.h);
-  const PressureProbeSpec& spec = spec_.pressure_probes[probe];
+  const PressureSensor& sensor = scene_.pressure_sensors[probe];
   return with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
-    return read_pressure_probe(k, scene_.particles, grid, spec, spec_.particles.dp);
+    return read_pressure_probe(k, scene_.particles, grid, sensor, spec_.particles.dp);
   });
 }
 
@@ -430,8 +430,8 @@ SampleBasis Simulation::sample_basis() {
     CellGrid grid;
     grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
     with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
-      for (const auto& probe : spec_.pressure_probes)
-        b.probe_pressure.push_back(read_pressure_probe(k, p, grid, probe, spec_.particles.dp));
+      for (const PressureSensor& sensor : scene_.pressure_sensors)
+        b.probe_pressure.push_back(read_pressure_probe(k, p, grid, sensor, spec_.particles.dp));
     });
   }
   for (PlateCoupling& pl : plates_) b.plate_inside.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
