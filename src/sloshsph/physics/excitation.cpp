@@ -7,6 +7,7 @@
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/signals/base_motion_record.hpp"
+#include "sloshsph/signals/cubic_spline.hpp"
 #include "sloshsph/signals/pulses.hpp"
 #include "sloshsph/signals/record_readers.hpp"
 #include "sloshsph/signals/white_noise.hpp"
@@ -14,7 +15,8 @@
 namespace sloshsph {
 
 struct BaseMotionSource::Record {
-  BaseMotionRecord record;
+  BaseMotionRecord record;  // record, noise
+  CubicSpline angle;        // pitch from a file: theta(t) in rad, simulation times
 };
 
 namespace {
@@ -67,6 +69,51 @@ TimeSeries load_record(const ExcitationSpec& e) {
   return read_peer_at2(e.file, "excitation.file", e.scale).acceleration;
 }
 
+// Largest angle a pitch record may hold: the harmonic pitch's `angle` limit. A record in
+// degrees read with unit = "rad" (57 times too large) is caught by it.
+constexpr double kMaxPitchAngle = 45.0 * std::numbers::pi / 180.0;
+
+// The angle record of a pitch from a file, in rad at simulation times t = time_scale tau + start
+// (tau: the file's time column), checked against the run [0, end_time].
+TimeSeries load_angle_record(const ExcitationSpec& e, double end_time) {
+  CsvRecordOptions o;
+  o.time_factor = e.time_scale;
+  o.value_factor = e.value_unit;
+  TimeSeries s = read_two_column_csv(e.file, "excitation.file", o);
+  for (double& t : s.t) t += e.start;
+  if (s.size() < 4)
+    throw InputError(e.file, "excitation.file",
+                     "a pitch record needs at least 4 rows (a not-a-knot cubic spline), found " + std::to_string(s.size()));
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (std::abs(s.value[i]) > kMaxPitchAngle)
+      throw InputError(e.file, "excitation.file",
+                       "the angle " + std::to_string(s.value[i] * 180.0 / std::numbers::pi) + " deg (row " +
+                           std::to_string(i + 1) + " of the data) is beyond 45 deg: is excitation.unit right?");
+  if (!(s.end() > 0.0))
+    throw InputError("", "excitation.start",
+                     "the record ends at t = " + std::to_string(s.end()) +
+                         " s (time_scale x its last time + start), before the run begins at t = 0");
+  if (!(s.start() < end_time))
+    throw InputError("", "excitation.start",
+                     "the record begins at t = " + std::to_string(s.start()) +
+                         " s (time_scale x its first time + start), at or after the end of the run (time.end = " +
+                         std::to_string(end_time) + " s)");
+  return s;
+}
+
+// The pitch from a file (docs/physics.md): theta, theta', theta'' of the not-a-knot cubic spline
+// through the record (signals/cubic_spline.hpp: C2, so the Euler term alpha = theta'' is
+// continuous and its error is O(h^2)). Outside the record the tank is held still: at the first
+// angle before the first sample, at the last angle after the last one (rate and acceleration 0;
+// a record that does not start and end at rest jumps in rate there, an impulse the fluid does
+// not feel).
+Periodic recorded_angle(const CubicSpline& angle, double t) {
+  if (t < angle.t.front()) return {angle.y.front(), 0.0, 0.0};
+  if (t > angle.t.back()) return {angle.y.back(), 0.0, 0.0};
+  const SplineSample s = evaluate(angle, t);
+  return {s.value, s.first, s.second};
+}
+
 TimeSeries noise_record(const ExcitationSpec& e, double end_time) {
   BandLimitedNoiseSpec n;
   n.seed = e.seed;
@@ -99,6 +146,16 @@ BaseMotionSource::BaseMotionSource(const ExcitationSpec& spec, double end_time) 
     }
     record_ = r;
   }
+  if (is_pitch_record(spec)) {
+    const TimeSeries angle = load_angle_record(spec, end_time);
+    auto r = std::make_shared<Record>();
+    try {
+      r->angle = not_a_knot_spline(angle);
+    } catch (const std::invalid_argument& x) {
+      throw InputError(spec.file, "excitation.file", x.what());
+    }
+    record_ = r;
+  }
   const int samples = 4000;
   for (int k = 0; k <= samples; ++k) {
     const BaseMotion m = at(end_time * k / samples);
@@ -121,7 +178,7 @@ BaseMotion BaseMotionSource::at(double t) const {
       break;
     }
     case ExcitationType::pitch: {
-      const Periodic a = stopped(e, e.angle, t);
+      const Periodic a = record_ ? recorded_angle(record_->angle, t) : stopped(e, e.angle, t);
       m.angle = a.value;
       m.angular_velocity = a.rate;
       m.angular_acceleration = a.acceleration;
