@@ -29,8 +29,10 @@ ExcitationSpec harmonic_pitch() {
 
 // The same motion as a record in degrees, sampled at `per_period` points a period from t0 to t1,
 // written in model time tau = (t - start) / time_scale (Froude scaling, as a measured record would
-// be given), with a header line and comments.
-ExcitationSpec file_pitch(const std::filesystem::path& path, int per_period, double t0, double t1) {
+// be given), with a header line and comments; with `derivatives`, also the rate and acceleration
+// columns, in deg per unit of tau (d/dtau = time_scale d/dt).
+ExcitationSpec file_pitch(const std::filesystem::path& path, int per_period, double t0, double t1,
+                          bool derivatives = false) {
   const ExcitationSpec h = harmonic_pitch();
   ExcitationSpec e = h;
   e.angle = 0.0;
@@ -46,7 +48,12 @@ ExcitationSpec file_pitch(const std::filesystem::path& path, int per_period, dou
   out.precision(17);
   for (int k = 0; t0 + k * dt <= t1 + 1e-12; ++k) {
     const double t = t0 + k * dt;
-    out << (t - e.start) / e.time_scale << ", " << h.angle * std::sin(h.omega * t + h.phase) * 180.0 / kPi << "\n";
+    const double deg = h.angle * 180.0 / kPi, phase = h.omega * t + h.phase;
+    out << (t - e.start) / e.time_scale << ", " << deg * std::sin(phase);
+    if (derivatives)
+      out << ", " << deg * h.omega * e.time_scale * std::cos(phase) << ", "
+          << -deg * h.omega * h.omega * e.time_scale * e.time_scale * std::sin(phase);
+    out << "\n";
   }
   return e;
 }
@@ -89,6 +96,35 @@ TEST(PitchRecord, HarmonicPitchWrittenToAFileIsReadBackWithinTheSplineError) {
     EXPECT_LE(e.rate, 4.5 / 24.0 * std::pow(wh, 3) + 1e-9);
     EXPECT_LE(e.acceleration, 2.0 * 3.0 / 8.0 * wh * wh + 1e-9);
     EXPECT_EQ(file.at(0.1).pivot.y, -0.1);
+  }
+  std::filesystem::remove(path);
+}
+
+// Reference: the harmonic pitch. The file gives the rate and acceleration columns, so theta'' is
+// the quintic Hermite interpolant's: error of order h^4 (h^6 on theta). Tolerance, relative to
+// theta0, theta0 w, theta0 w^2 at N samples a period (w h = 2 pi / N): (w h)^6 / 46080 on theta
+// (the Hermite remainder f^(6)/6! (t - a)^3 (t - b)^3), and (w h)^5 / 100, (w h)^4 / 100 on
+// theta' and theta'' (measured well inside, printed); the error ratio of theta'' from N = 25 to
+// N = 50 is 12 to 20 (order 4). Also checks the derivative columns' scaling by time_scale.
+TEST(PitchRecord, DerivativeColumnsAreUsedWithTheirTimeScale) {
+  const auto path = std::filesystem::temp_directory_path() / "sloshsph_pitch_record_derivatives.csv";
+  const double t0 = 0.25, t1 = 0.25 + 3.0 / 0.9;
+  const BaseMotionSource harmonic(harmonic_pitch(), 4.0);
+  double previous = 0.0;
+  for (const int n : {25, 50}) {
+    const BaseMotionSource file(file_pitch(path, n, t0, t1, true), 4.0);
+    const PitchErrors e = largest_errors(file, harmonic, t0, t1);
+    const double wh = 2.0 * kPi / n;
+    std::printf("  N = %d a period, with rate and acceleration columns: relative errors theta %.3g, theta' %.3g, "
+                "theta'' %.3g\n", n, e.angle, e.rate, e.acceleration);
+    EXPECT_LE(e.angle, std::pow(wh, 6) / 46080.0 + 1e-9);
+    EXPECT_LE(e.rate, std::pow(wh, 5) / 100.0 + 1e-9);
+    EXPECT_LE(e.acceleration, std::pow(wh, 4) / 100.0 + 1e-9);
+    if (previous > 0.0) {
+      EXPECT_GT(previous / e.acceleration, 12.0);
+      EXPECT_LT(previous / e.acceleration, 20.0);
+    }
+    previous = e.acceleration;
   }
   std::filesystem::remove(path);
 }
