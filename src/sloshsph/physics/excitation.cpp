@@ -78,11 +78,11 @@ constexpr double kMaxPitchAngle = 45.0 * std::numbers::pi / 180.0;
 // acceleration), in rad at simulation times t = time_scale tau + start (tau: the file's time
 // column), checked against the run [0, end_time]. The rate and acceleration columns are per unit
 // of the file's time: d/dt = (1/time_scale) d/dtau.
-CsvTable read_angle_table(const ExcitationSpec& e, double end_time) {
+RecordTable read_angle_table(const ExcitationSpec& e, double end_time) {
   CsvRecordOptions o;
   o.time_factor = e.time_scale;
   o.value_factor = e.value_unit;
-  CsvTable s = read_csv_table(e.file, "excitation.file", {2, 4},
+  RecordTable s = read_record_table(e.file, "excitation.file", {2, 4},
                               "2 fields (time, angle) or 4 (time, angle, rate, acceleration)", o);
   for (double& t : s.t) t += e.start;
   if (s.values.size() == 1 && s.t.size() < 4)
@@ -109,7 +109,7 @@ CsvTable read_angle_table(const ExcitationSpec& e, double end_time) {
 // columns when it has them, else those of the not-a-knot cubic spline through the angles
 // (signals/cubic_spline.hpp: C2, so the Euler term alpha = theta'' is continuous, O(h^2) error).
 HermiteSamples angle_samples(const ExcitationSpec& e, double end_time) {
-  CsvTable s = read_angle_table(e, end_time);
+  RecordTable s = read_angle_table(e, end_time);
   if (s.values.size() == 1) return hermite_samples(not_a_knot_spline(TimeSeries{s.t, s.values[0]}));
   HermiteSamples h{s.t, s.values[0], s.values[1], s.values[2]};
   for (double& v : h.first) v /= e.time_scale;

@@ -55,11 +55,11 @@ std::vector<Row> interior_rows(const std::vector<double>& t, const std::vector<d
 
 }  // namespace
 
-CubicSpline not_a_knot_spline(const TimeSeries& samples) {
+CubicInterpolant not_a_knot_spline(const TimeSeries& samples) {
   check_time_series(samples, "cubic spline");
   const std::size_t n = samples.size();
   if (n < 4) throw std::invalid_argument("a not-a-knot cubic spline needs at least 4 samples, found " + std::to_string(n));
-  CubicSpline s{samples.t, samples.value, std::vector<double>(n, 0.0)};
+  CubicInterpolant s{samples.t, samples.value, std::vector<double>(n, 0.0)};
   const std::vector<double> inner = solve_tridiagonal(interior_rows(s.t, s.y));
   std::copy(inner.begin(), inner.end(), s.moment.begin() + 1);
   const double h0 = s.t[1] - s.t[0], h1 = s.t[2] - s.t[1];
@@ -69,7 +69,7 @@ CubicSpline not_a_knot_spline(const TimeSeries& samples) {
   return s;
 }
 
-SplineSample evaluate(const CubicSpline& s, double t) {
+SplineSample evaluate(const CubicInterpolant& s, double t) {
   // Interval [t_i, t_i+1] holding t (the first or the last one outside the knots).
   const std::size_t upper = static_cast<std::size_t>(std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin());
   const std::size_t i = std::clamp<std::size_t>(upper, 1, s.t.size() - 1) - 1;

@@ -23,7 +23,7 @@ namespace sloshsph {
 // error of theta'' up to the ends (measured on a sine: within the clamped spline's bound
 // 3/8 h^2 |f''''| inside, up to 1.9 times it in the two intervals at each end;
 // tests/unit/signals/cubic_spline_test.cpp) and reproduces any cubic exactly.
-struct CubicSpline {
+struct CubicInterpolant {
   std::vector<double> t;       // knots, strictly increasing
   std::vector<double> y;       // values at the knots
   std::vector<double> moment;  // s''(t_i)
@@ -38,10 +38,10 @@ struct SplineSample {
 
 // The not-a-knot spline through the samples: >= 4 samples, strictly increasing finite times.
 // Throws std::invalid_argument otherwise. O(n) (a tridiagonal solve).
-CubicSpline not_a_knot_spline(const TimeSeries& samples);
+CubicInterpolant not_a_knot_spline(const TimeSeries& samples);
 
 // s, s', s'' at t. For t outside [t_0, t_n-1] the end interval's cubic is extended (callers
 // decide what happens outside the record). O(log n).
-SplineSample evaluate(const CubicSpline& spline, double t);
+SplineSample evaluate(const CubicInterpolant& spline, double t);
 
 }  // namespace sloshsph

@@ -7,7 +7,7 @@
 
 namespace sloshsph {
 
-HermiteSamples hermite_samples(const CubicSpline& spline) {
+HermiteSamples hermite_samples(const CubicInterpolant& spline) {
   HermiteSamples h{spline.t, spline.y, {}, spline.moment};
   for (double t : spline.t) h.first.push_back(evaluate(spline, t).first);
   return h;

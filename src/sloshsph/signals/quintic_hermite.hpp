@@ -20,7 +20,7 @@ struct HermiteSamples {
 };
 
 // The knot data of a cubic spline: s, s', s'' at its knots.
-HermiteSamples hermite_samples(const CubicSpline& spline);
+HermiteSamples hermite_samples(const CubicInterpolant& spline);
 
 // Throws std::invalid_argument unless the samples have >= 2 knots, equal lengths and strictly
 // increasing finite times and finite values (`what` names them in the message).

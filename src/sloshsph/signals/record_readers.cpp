@@ -182,10 +182,10 @@ GroundRecord read_peer_at2(const std::string& path, const std::string& key, doub
   return rec;
 }
 
-CsvTable read_csv_table(const std::string& path, const std::string& key, const std::vector<std::size_t>& field_counts,
+RecordTable read_record_table(const std::string& path, const std::string& key, const std::vector<std::size_t>& field_counts,
                         const std::string& expected, const CsvRecordOptions& options) {
   std::ifstream in = open_or_throw(path, key);
-  CsvTable s;
+  RecordTable s;
   std::string line;
   std::size_t line_no = 0;
   bool first_data_line = true;
@@ -240,7 +240,7 @@ CsvTable read_csv_table(const std::string& path, const std::string& key, const s
 }
 
 TimeSeries read_two_column_csv(const std::string& path, const std::string& key, const CsvRecordOptions& options) {
-  CsvTable table = read_csv_table(path, key, {2}, "2 fields (time, value)", options);
+  RecordTable table = read_record_table(path, key, {2}, "2 fields (time, value)", options);
   return {std::move(table.t), std::move(table.values[0])};
 }
 

@@ -17,7 +17,7 @@ constexpr double kPi = std::numbers::pi;
 
 // Reference: a not-a-knot spline reproduces any cubic exactly (one cubic through all the
 // knots satisfies every condition). Non-uniform knots, 4 and 9 samples. Tolerance: rounding, 1e-11.
-TEST(CubicSpline, ReproducesACubicOnNonUniformKnots) {
+TEST(NotAKnotSpline, ReproducesACubicOnNonUniformKnots) {
   auto f = [](double t) { return 0.3 - 1.2 * t + 0.7 * t * t - 0.25 * t * t * t; };
   auto df = [](double t) { return -1.2 + 1.4 * t - 0.75 * t * t; };
   auto ddf = [](double t) { return 1.4 - 1.5 * t; };
@@ -28,7 +28,7 @@ TEST(CubicSpline, ReproducesACubicOnNonUniformKnots) {
       s.t.push_back(t);
       s.value.push_back(f(t));
     }
-    const CubicSpline spline = not_a_knot_spline(s);
+    const CubicInterpolant spline = not_a_knot_spline(s);
     for (double t = knots.front(); t <= knots.back(); t += 0.01) {
       const SplineSample v = evaluate(spline, t);
       EXPECT_NEAR(v.value, f(t), 1e-11) << t;
@@ -65,7 +65,7 @@ RegionErrors sine_errors(int per_period) {
       s.t.push_back(k * h);
       s.value.push_back(std::sin(w * k * h + phase));
     }
-    const CubicSpline spline = not_a_knot_spline(s);
+    const CubicInterpolant spline = not_a_knot_spline(s);
     for (int k = 0; k <= 20 * (n - 1); ++k) {  // 20 points per interval, the ends included
       const double t = k * h / 20.0;
       const SplineSample v = evaluate(spline, t);
@@ -85,7 +85,7 @@ RegionErrors sine_errors(int per_period) {
 // (measured: a third of them); in the two intervals at each end, where the not-a-knot conditions
 // act, 2.5, 4.5 and 2 times them (measured over 64 phases, at N = 20, 50 and 100 alike: 2.17,
 // 4.31 and 1.88 times). And the order h^2 of s'' (error ratio 3.5 to 4.5 from N = 50 to 100).
-TEST(CubicSpline, SampledSineIsWithinTheSplineErrorBounds) {
+TEST(NotAKnotSpline, SampledSineIsWithinTheSplineErrorBounds) {
   const RegionErrors e50 = sine_errors(50), e100 = sine_errors(100);
   const double wh = 2.0 * kPi / 50.0;
   const SineErrors bound{5.0 / 384.0 * std::pow(wh, 4), 1.0 / 24.0 * std::pow(wh, 3), 3.0 / 8.0 * wh * wh};
@@ -103,7 +103,7 @@ TEST(CubicSpline, SampledSineIsWithinTheSplineErrorBounds) {
   EXPECT_LT(order, 4.5);
 }
 
-TEST(CubicSpline, RefusesTooFewOrUnorderedSamples) {
+TEST(NotAKnotSpline, RefusesTooFewOrUnorderedSamples) {
   EXPECT_THROW(not_a_knot_spline(TimeSeries{{0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}}), std::invalid_argument);
   EXPECT_THROW(not_a_knot_spline(TimeSeries{{0.0, 1.0, 1.0, 2.0}, {0.0, 1.0, 0.0, 1.0}}), std::invalid_argument);
 }

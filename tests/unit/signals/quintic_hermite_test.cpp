@@ -36,7 +36,7 @@ TEST(QuinticHermite, ReproducesAQuintic) {
 // interpolant of its end data. Tolerance: rounding, 1e-12 of the data's scale.
 TEST(QuinticHermite, WithTheSplineKnotDataIsTheSpline) {
   TimeSeries data{{0.0, 0.1, 0.25, 0.3, 0.5, 0.8, 0.9}, {0.0, 0.02, -0.01, 0.03, 0.05, -0.02, 0.0}};
-  const CubicSpline spline = not_a_knot_spline(data);
+  const CubicInterpolant spline = not_a_knot_spline(data);
   const HermiteSamples h = hermite_samples(spline);
   for (double t = 0.0; t <= 0.9; t += 0.001) {
     const SplineSample a = evaluate(spline, t), b = evaluate(h, t);
