@@ -202,7 +202,8 @@ struct TimeSpec {
 
 // Imposed motion of the tank (thesis 2.6.2, 4.4.2; Shao et al. 3.3; Dincer 3).
 //  harmonic: X(t) = amplitude sin(omega t + phase), horizontal
-//  pitch:    theta(t) = angle sin(omega t + phase) about `pivot`
+//  pitch:    theta(t) = angle sin(omega t + phase) about `pivot`, or theta(t) from a file
+//            (two columns: time, angle; a not-a-knot cubic spline, physics/excitation.hpp)
 //  record:   a ground-acceleration record (PEER AT2 in g, or CSV time,value)
 //  pulse:    one-cycle sine or cosine acceleration pulse (Dincer 2019, 3.1)
 //  noise:    band-limited white-noise acceleration (deterministic from its seed)
@@ -224,14 +225,16 @@ struct ExcitationSpec {
   double ramp = 0.0;                 // s, smooth ramp-up time
   double phase = 0.0;                // rad
   double stop = -1.0;                // s, harmonic/pitch motion stops after this time (< 0: never)
-  // record
-  std::string file;                  // resolved path of the record
+  // record (and pitch from a file: file, time_scale, value_unit, start)
+  std::string file;                  // resolved path of the record (pitch: empty for the harmonic pitch)
   std::string format;                // "at2" or "csv"
   double scale = 1.0;                // multiplies the record (after unit conversion)
   double time_scale = 1.0;           // CSV: multiplies the time column to give seconds
-  double value_unit = 1.0;           // CSV: multiplies the values to give m/s^2 (9.80665 for g)
+  double value_unit = 1.0;           // CSV: multiplies the values to give m/s^2 (9.80665 for g);
+                                     // pitch file: to give rad (pi/180 for "deg", 1 for "rad")
   bool baseline_correction = true;   // remove the drift velocity so the base ends at rest
-  double start = 0.0;                // s, the record or pulse starts at this time
+  double start = 0.0;                // s, the record or pulse starts at this time (pitch file:
+                                     // added to the file's scaled times, may be negative)
   // pulse
   std::string shape = "sine";        // "sine" or "cosine"
   double acceleration = 0.0;         // m/s^2, peak acceleration of a pulse
@@ -241,6 +244,9 @@ struct ExcitationSpec {
   double band_low = 0.05, band_high = 0.5;  // Hz
   double rms = 0.0;                  // m/s^2, RMS acceleration of the noise
 };
+
+// A pitch whose angle history comes from a file (not the harmonic pitch).
+inline bool is_pitch_record(const ExcitationSpec& e) { return e.type == ExcitationType::pitch && !e.file.empty(); }
 
 struct GaugeSpec {
   std::string name;

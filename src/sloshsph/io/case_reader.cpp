@@ -207,6 +207,21 @@ std::string resolve_path(TableReader& r, const std::string& key) {
   return std::filesystem::absolute(p).lexically_normal().string();
 }
 
+// A pitch from a file: the record gives theta(t), so the harmonic pitch's keys (angle, the
+// frequency, ramp, phase, stop) are refused with a message that says why, not as unknown keys.
+// The file's values (angle and time) are checked when the record is read (physics/excitation.cpp).
+void read_pitch_file_keys(TableReader& r, ExcitationSpec& e) {
+  for (const char* key : {"angle", "frequency", "omega", "beta", "beta_reference", "ramp", "phase", "stop"})
+    if (r.has(key))
+      r.fail(key, "belongs to the harmonic pitch; with 'file' the record gives the angle at every time "
+                  "(remove '" + std::string(key) + "', or remove 'file')");
+  e.file = resolve_path(r, "file");
+  if (!r.has("unit")) r.fail("unit", "is required with 'file': the unit of the angle column, \"deg\" or \"rad\"");
+  e.value_unit = r.choice("unit", "deg", {"deg", "rad"}) == "deg" ? 3.141592653589793238 / 180.0 : 1.0;
+  e.time_scale = r.positive("time_scale", e.time_scale);
+  e.start = r.number("start", e.start);
+}
+
 ExcitationSpec read_excitation(TableReader& r) {
   ExcitationSpec e;
   const std::string type = r.choice("type", "harmonic", {"none", "harmonic", "pitch", "record", "pulse", "noise"});
@@ -217,10 +232,14 @@ ExcitationSpec read_excitation(TableReader& r) {
     read_frequency(r, e);
   } else if (type == "pitch") {
     e.type = ExcitationType::pitch;
-    if (!r.has("angle")) r.fail("angle", "is required for a pitch excitation (degrees)");
-    e.angle = r.in_range("angle", 0.0, 0.0, 45.0) * 3.141592653589793238 / 180.0;
+    if (r.has("file")) {
+      read_pitch_file_keys(r, e);
+    } else {
+      if (!r.has("angle")) r.fail("angle", "is required for a pitch excitation (degrees), or give 'file' (an angle record)");
+      e.angle = r.in_range("angle", 0.0, 0.0, 45.0) * 3.141592653589793238 / 180.0;
+      read_frequency(r, e);
+    }
     e.pivot = r.point("pivot");
-    read_frequency(r, e);
   } else if (type == "record") {
     e.type = ExcitationType::record;
     e.file = resolve_path(r, "file");
@@ -837,8 +856,15 @@ static toml::table excitation_table(const ExcitationSpec& x) {
       break;
     case ExcitationType::pitch:
       e.insert("type", "pitch");
-      e.insert("angle", x.angle * 180.0 / 3.141592653589793238);
       e.insert("pivot", toml::array{x.pivot.x, x.pivot.y});
+      if (is_pitch_record(x)) {
+        e.insert("file", x.file);
+        e.insert("unit", x.value_unit == 1.0 ? "rad" : "deg");
+        e.insert("time_scale", x.time_scale);
+        e.insert("start", x.start);
+        break;
+      }
+      e.insert("angle", x.angle * 180.0 / 3.141592653589793238);
       periodic();
       break;
     case ExcitationType::record:

@@ -7,6 +7,8 @@
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/signals/base_motion_record.hpp"
+#include "sloshsph/signals/cubic_spline.hpp"
+#include "sloshsph/signals/quintic_hermite.hpp"
 #include "sloshsph/signals/pulses.hpp"
 #include "sloshsph/signals/record_readers.hpp"
 #include "sloshsph/signals/white_noise.hpp"
@@ -14,7 +16,8 @@
 namespace sloshsph {
 
 struct BaseMotionSource::Record {
-  BaseMotionRecord record;
+  BaseMotionRecord record;  // record, noise
+  HermiteSamples angle;     // pitch from a file: theta, theta', theta'' (rad, s) at the samples
 };
 
 namespace {
@@ -67,6 +70,66 @@ TimeSeries load_record(const ExcitationSpec& e) {
   return read_peer_at2(e.file, "excitation.file", e.scale).acceleration;
 }
 
+// Largest angle a pitch record may hold: the harmonic pitch's `angle` limit. A record in
+// degrees read with unit = "rad" (57 times too large) is caught by it.
+constexpr double kMaxPitchAngle = 45.0 * std::numbers::pi / 180.0;
+
+// The angle record of a pitch from a file: its rows (time, angle) or (time, angle, rate,
+// acceleration), in rad at simulation times t = time_scale tau + start (tau: the file's time
+// column), checked against the run [0, end_time]. The rate and acceleration columns are per unit
+// of the file's time: d/dt = (1/time_scale) d/dtau.
+RecordTable read_angle_table(const ExcitationSpec& e, double end_time) {
+  CsvRecordOptions o;
+  o.time_factor = e.time_scale;
+  o.value_factor = e.value_unit;
+  RecordTable s = read_record_table(e.file, "excitation.file", {2, 4},
+                              "2 fields (time, angle) or 4 (time, angle, rate, acceleration)", o);
+  for (double& t : s.t) t += e.start;
+  if (s.values.size() == 1 && s.t.size() < 4)
+    throw InputError(e.file, "excitation.file",
+                     "a pitch record needs at least 4 rows (a not-a-knot cubic spline), found " + std::to_string(s.t.size()));
+  for (std::size_t i = 0; i < s.t.size(); ++i)
+    if (std::abs(s.values[0][i]) > kMaxPitchAngle)
+      throw InputError(e.file, "excitation.file",
+                       "the angle " + std::to_string(s.values[0][i] * 180.0 / std::numbers::pi) + " deg (row " +
+                           std::to_string(i + 1) + " of the data) is beyond 45 deg: is excitation.unit right?");
+  if (!(s.t.back() > 0.0))
+    throw InputError("", "excitation.start",
+                     "the record ends at t = " + std::to_string(s.t.back()) +
+                         " s (time_scale x its last time + start), before the run begins at t = 0");
+  if (!(s.t.front() < end_time))
+    throw InputError("", "excitation.start",
+                     "the record begins at t = " + std::to_string(s.t.front()) +
+                         " s (time_scale x its first time + start), at or after the end of the run (time.end = " +
+                         std::to_string(end_time) + " s)");
+  return s;
+}
+
+// theta, theta', theta'' at the samples (docs/physics.md): the file's own rate and acceleration
+// columns when it has them, else those of the not-a-knot cubic spline through the angles
+// (signals/cubic_spline.hpp: C2, so the Euler term alpha = theta'' is continuous, O(h^2) error).
+HermiteSamples angle_samples(const ExcitationSpec& e, double end_time) {
+  RecordTable s = read_angle_table(e, end_time);
+  if (s.values.size() == 1) return hermite_samples(not_a_knot_spline(TimeSeries{s.t, s.values[0]}));
+  HermiteSamples h{s.t, s.values[0], s.values[1], s.values[2]};
+  for (double& v : h.first) v /= e.time_scale;
+  for (double& a : h.second) a /= e.time_scale * e.time_scale;
+  check_hermite_samples(h, "pitch record");  // a rate or acceleration overflowed by a tiny time_scale
+  return h;
+}
+
+// The pitch from a file between the samples: the quintic Hermite interpolant of theta, theta',
+// theta'' (signals/quintic_hermite.hpp; with the spline's data, the spline itself). Outside the
+// record the tank is held still: at the first angle before the first sample, at the last angle
+// after the last one (rate and acceleration 0; a record that does not start and end at rest jumps
+// in rate there, an impulse the fluid does not feel).
+Periodic recorded_angle(const HermiteSamples& angle, double t) {
+  if (t < angle.t.front()) return {angle.value.front(), 0.0, 0.0};
+  if (t > angle.t.back()) return {angle.value.back(), 0.0, 0.0};
+  const SplineSample s = evaluate(angle, t);
+  return {s.value, s.first, s.second};
+}
+
 TimeSeries noise_record(const ExcitationSpec& e, double end_time) {
   BandLimitedNoiseSpec n;
   n.seed = e.seed;
@@ -99,6 +162,15 @@ BaseMotionSource::BaseMotionSource(const ExcitationSpec& spec, double end_time) 
     }
     record_ = r;
   }
+  if (is_pitch_record(spec)) {
+    auto r = std::make_shared<Record>();
+    try {
+      r->angle = angle_samples(spec, end_time);
+    } catch (const std::invalid_argument& x) {
+      throw InputError(spec.file, "excitation.file", x.what());
+    }
+    record_ = r;
+  }
   const int samples = 4000;
   for (int k = 0; k <= samples; ++k) {
     const BaseMotion m = at(end_time * k / samples);
@@ -121,7 +193,7 @@ BaseMotion BaseMotionSource::at(double t) const {
       break;
     }
     case ExcitationType::pitch: {
-      const Periodic a = stopped(e, e.angle, t);
+      const Periodic a = record_ ? recorded_angle(record_->angle, t) : stopped(e, e.angle, t);
       m.angle = a.value;
       m.angular_velocity = a.rate;
       m.angular_acceleration = a.acceleration;

@@ -26,7 +26,10 @@ struct BaseMotion {
 //  harmonic: X = r(t) A sin(w t + phase), r(t) = (1 - cos(pi t / T_ramp)) / 2 for t < T_ramp
 //            (1 after), exact derivatives (product rule); after `stop` the base coasts at the
 //            velocity it had (zero acceleration: the fluid then decays freely).
-//  pitch:    theta = r(t) theta0 sin(w t + phase) about the pivot, the same ramp and stop.
+//  pitch:    theta = r(t) theta0 sin(w t + phase) about the pivot, the same ramp and stop;
+//            or, with a file, the angle record at t = time_scale tau + start: its own rate and
+//            acceleration columns, or the not-a-knot cubic spline through its angles, joined by
+//            quintic Hermite pieces; held still outside the record (excitation.cpp).
 //  record:   the record's acceleration from `start` on, integrated exactly (signals/
 //            base_motion_record.hpp), with the optional drift-velocity correction.
 //  pulse:    one-cycle sine or cosine acceleration pulse (signals/pulses.hpp).

@@ -44,7 +44,7 @@ double reference_omega(const CaseSpec& spec) {
 
 CaseSpec resolve_case(CaseSpec spec) {
   ExcitationSpec& e = spec.excitation;
-  if (e.type == ExcitationType::harmonic || e.type == ExcitationType::pitch) {
+  if (e.type == ExcitationType::harmonic || (e.type == ExcitationType::pitch && !is_pitch_record(e))) {
     if (e.frequency) e.omega = 2.0 * std::numbers::pi * *e.frequency;
     else e.omega = *e.beta * reference_omega(spec);
     if (!(e.omega > 0.0) || !std::isfinite(e.omega))

@@ -213,7 +213,8 @@ SweepSets split_sweep_sets(const std::vector<std::string>& sets) {
 
 double excitation_beta(const CaseSpec& spec) {
   const ExcitationType type = spec.excitation.type;
-  if (type != ExcitationType::harmonic && type != ExcitationType::pitch) return std::numeric_limits<double>::quiet_NaN();
+  if ((type != ExcitationType::harmonic && type != ExcitationType::pitch) || is_pitch_record(spec.excitation))
+    return std::numeric_limits<double>::quiet_NaN();
   return spec.excitation.omega / reference_omega(spec);
 }
 
@@ -231,6 +232,9 @@ std::vector<SweepPoint> plan_sweep(const CaseSpec& spec, const std::vector<doubl
     if (type != ExcitationType::harmonic && type != ExcitationType::pitch)
       throw InputError(spec.where("excitation.type"), "excitation.type",
                        "a frequency sweep needs a harmonic or pitch excitation");
+    if (is_pitch_record(spec.excitation))
+      throw InputError(spec.where("excitation.file"), "excitation.file",
+                       "a frequency sweep needs a harmonic pitch, not a pitch from a file");
     const double omega_ref = reference_omega(spec);
     for (double beta : betas) {
       SweepPoint p;

@@ -182,45 +182,66 @@ GroundRecord read_peer_at2(const std::string& path, const std::string& key, doub
   return rec;
 }
 
-TimeSeries read_two_column_csv(const std::string& path, const std::string& key, const CsvRecordOptions& options) {
+RecordTable read_record_table(const std::string& path, const std::string& key, const std::vector<std::size_t>& field_counts,
+                        const std::string& expected, const CsvRecordOptions& options) {
   std::ifstream in = open_or_throw(path, key);
-  TimeSeries s;
+  RecordTable s;
   std::string line;
   std::size_t line_no = 0;
   bool first_data_line = true;
+  const auto allowed = [&](std::size_t n) {
+    if (!s.t.empty()) return n == s.values.size() + 1;  // every row as the first one
+    return std::find(field_counts.begin(), field_counts.end(), n) != field_counts.end();
+  };
+  std::vector<double> row;
   while (read_line(in, line)) {
     ++line_no;
     if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     const auto fields = split_fields(line, true);
     if (fields.empty()) continue;
     const std::string where = at_line(path, line_no);
-    double t, v;
-    const bool numeric = fields.size() == 2 && parse_exact(fields[0], t) && parse_exact(fields[1], v);
+    row.assign(fields.size(), 0.0);
+    bool numeric = allowed(fields.size());
+    for (std::size_t j = 0; numeric && j < fields.size(); ++j) numeric = parse_exact(fields[j], row[j]);
     if (!numeric) {
+      double v;
       bool any_number = false;
-      for (const auto& f : fields) any_number = any_number || parse_exact(f, t);
+      for (const auto& f : fields) any_number = any_number || parse_exact(f, v);
       if (first_data_line && !any_number) {  // a header line of names
         first_data_line = false;
         continue;
       }
-      if (fields.size() != 2)
-        throw InputError(where, key, "expected 2 fields (time, value), found " + std::to_string(fields.size()));
-      throw InputError(where, key, "'" + (parse_exact(fields[0], t) ? fields[1] : fields[0]) + "' is not a number");
+      if (!allowed(fields.size()))
+        throw InputError(where, key,
+                         s.t.empty() || field_counts.size() == 1
+                             ? "expected " + expected + ", found " + std::to_string(fields.size())
+                             : "found " + std::to_string(fields.size()) + " fields, but the first row has " +
+                                   std::to_string(s.values.size() + 1));
+      for (const auto& f : fields)
+        if (!parse_exact(f, v)) throw InputError(where, key, "'" + f + "' is not a number");
     }
     first_data_line = false;
-    if (!std::isfinite(t) || !std::isfinite(v)) throw InputError(where, key, "non-finite number");
-    t *= options.time_factor;
-    v *= options.value_factor * options.scale;
-    if (!std::isfinite(t) || !std::isfinite(v))
-      throw InputError(where, key, "a number is not finite once converted to SI (time or value too large)");
+    for (double x : row)
+      if (!std::isfinite(x)) throw InputError(where, key, "non-finite number");
+    const double t = row[0] * options.time_factor;
+    for (std::size_t j = 1; j < row.size(); ++j) row[j] *= options.value_factor * options.scale;
+    for (double x : row)
+      if (!std::isfinite(x) || !std::isfinite(t))
+        throw InputError(where, key, "a number is not finite once converted to SI (time or value too large)");
     if (!s.t.empty() && !(t > s.t.back()))
       throw InputError(where, key, "time " + std::to_string(t) + " s is not after the previous row's time");
+    if (s.t.empty()) s.values.resize(row.size() - 1);
     s.t.push_back(t);
-    s.value.push_back(v);
+    for (std::size_t j = 1; j < row.size(); ++j) s.values[j - 1].push_back(row[j]);
   }
   if (s.t.size() < 2)
     throw InputError(path, key, "a record needs at least 2 rows, found " + std::to_string(s.t.size()));
   return s;
+}
+
+TimeSeries read_two_column_csv(const std::string& path, const std::string& key, const CsvRecordOptions& options) {
+  RecordTable table = read_record_table(path, key, {2}, "2 fields (time, value)", options);
+  return {std::move(table.t), std::move(table.values[0])};
 }
 
 }  // namespace sloshsph

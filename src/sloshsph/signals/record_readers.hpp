@@ -40,6 +40,18 @@ struct CsvRecordOptions {
 TimeSeries read_two_column_csv(const std::string& path, const std::string& key,
                                const CsvRecordOptions& options = {});
 
+// A file of rows `time, value_1, ..., value_k`, read as read_two_column_csv reads two columns.
+struct RecordTable {
+  std::vector<double> t;                    // s (the first column times time_factor)
+  std::vector<std::vector<double>> values;  // values[j][i]: column j + 2 of row i, times value_factor and scale
+};
+
+// The same rules and checks as read_two_column_csv, with any field count of `field_counts`
+// (every row the count of the first one). `expected` describes them in the messages, e.g.
+// "2 fields (time, value)": "expected 2 fields (time, value), found 3".
+RecordTable read_record_table(const std::string& path, const std::string& key, const std::vector<std::size_t>& field_counts,
+                        const std::string& expected, const CsvRecordOptions& options = {});
+
 // Parses one whitespace-free token that may hold several Fortran fixed-width numbers run
 // together; appends them to `out`. Returns false if the token is not made of numbers.
 bool parse_fortran_numbers(const std::string& token, std::vector<double>& out);
