@@ -50,6 +50,13 @@ TEST(Checkpoint, WcsphResumesBitwise) {
   expect_bitwise_resume(small_case({"scheme={type=\"wcsph\", turbulence=\"sps\", xsph=0.05, shepard_interval=20}"}));
 }
 
+// Particle shifting (issue 30) keeps nothing between steps but the count of cut shifts, which the
+// checkpoint holds: resumed runs with it on are bitwise too.
+TEST(Checkpoint, ShiftingResumesBitwise) {
+  expect_bitwise_resume(small_case({"scheme.shifting=lind"}));
+  expect_bitwise_resume(small_case({"scheme={type=\"wcsph\", shifting=\"delta_plus\"}"}));
+}
+
 // A damaged checkpoint is an InputError naming the record, never garbage.
 TEST(Checkpoint, TruncatedCheckpointIsReported) {
   const CaseSpec spec = small_case({});
