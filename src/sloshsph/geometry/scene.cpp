@@ -54,7 +54,7 @@ std::vector<PressureSensor> pressure_sensors(const CaseSpec& spec, const TankGeo
       sensor = {probe.position, *probe.face_end, true};
       if (outside(*probe.face_end)) fail("to", *probe.face_end, ": the end of its face,");
     } else if (probe.size > 0.0) {
-      const double off = tank.distance_to_wall(probe.position);
+      const double off = std::abs(tank.signed_distance(probe.position));
       if (off > dp) {
         std::ostringstream m;
         m << "pressure probe '" << probe.name << "' at (" << probe.position.x << ", " << probe.position.y << ") m is "

@@ -320,11 +320,6 @@ std::size_t TankGeometry::nearest_segment(Vec2 p) const {
   return best;
 }
 
-double TankGeometry::distance_to_wall(Vec2 p) const {
-  const std::size_t k = nearest_segment(p);
-  return distance_to_segment(p, wall[k], wall[k + 1]);
-}
-
 double TankGeometry::bottom_at(double x) const {
   double y = std::numeric_limits<double>::max();
   for (std::size_t k = 0; k + 1 < wall.size(); ++k) {

@@ -31,9 +31,8 @@ struct TankGeometry {
   double bottom_at(double x) const;
 
   // The segment of the wall polyline nearest to p (the first of equally near ones, e.g. at a
-  // corner), and p's distance to it. For placing a sensor face on the wall (geometry/scene.cpp).
+  // corner). For placing a sensor face on the wall (geometry/scene.cpp).
   std::size_t nearest_segment(Vec2 p) const;
-  double distance_to_wall(Vec2 p) const;
 };
 
 // Builds the section of `spec.shape`. Throws InputError for an unknown shape or bad sizes.

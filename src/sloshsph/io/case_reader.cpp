@@ -128,7 +128,6 @@ void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.repulsive_range = r.in_range("repulsive_range", s.repulsive_range, 0.05, 2.0);
   s.shifting = r.choice("shifting", "none", {"none", "lind"}) == "lind" ? ShiftingModel::lind : ShiftingModel::none;
   s.shifting_coefficient = r.in_range("shifting_coefficient", s.shifting_coefficient, 0.1, 10.0);
-  s.shifting_max = r.in_range("shifting_max", s.shifting_max, 0.01, 0.5);
 }
 
 void read_wcsph_keys(TableReader& r, SchemeSpec& s) {
@@ -151,7 +150,6 @@ void read_wcsph_keys(TableReader& r, SchemeSpec& s) {
   w.cfl = r.in_range("cfl", w.cfl, 0.01, 1.0);
   s.shifting = r.choice("shifting", "none", {"none", "delta_plus"}) == "delta_plus" ? ShiftingModel::delta_plus
                                                                                    : ShiftingModel::none;
-  s.shifting_max = r.in_range("shifting_max", s.shifting_max, 0.01, 0.5);
 }
 
 SchemeSpec read_scheme(TableReader& r) {
@@ -161,6 +159,7 @@ SchemeSpec read_scheme(TableReader& r) {
   else read_wcsph_keys(r, s);
   s.neighbour_skin = r.in_range("neighbour_skin", s.neighbour_skin, 0.0, 1.0);
   s.wall_contact = r.boolean("wall_contact", s.wall_contact);
+  s.shifting_max = r.in_range("shifting_max", s.shifting_max, 0.01, 0.5);  // both schemes' shifts
   r.finish();
   return s;
 }
@@ -794,7 +793,10 @@ snapshot_interval = 0.1
 }
 
 static toml::table scheme_table(const SchemeSpec& x) {
-  toml::table t{{"type", x.type}, {"neighbour_skin", x.neighbour_skin}, {"wall_contact", x.wall_contact}};
+  toml::table t{{"type", x.type},
+                {"neighbour_skin", x.neighbour_skin},
+                {"wall_contact", x.wall_contact},
+                {"shifting_max", x.shifting_max}};
   if (x.type == "isph") {
     t.insert("alpha", x.alpha);
     t.insert("pressure", x.pressure == PressureSolve::implicit_krylov ? "implicit" : "explicit");
@@ -812,7 +814,6 @@ static toml::table scheme_table(const SchemeSpec& x) {
     t.insert("repulsive_range", x.repulsive_range);
     t.insert("shifting", x.shifting == ShiftingModel::lind ? "lind" : "none");
     t.insert("shifting_coefficient", x.shifting_coefficient);
-    t.insert("shifting_max", x.shifting_max);
     return t;
   }
   const WcsphSpec& w = x.wcsph;
@@ -831,7 +832,6 @@ static toml::table scheme_table(const SchemeSpec& x) {
   t.insert("integrator", w.integrator == Integrator::leapfrog ? "leapfrog" : "symplectic");
   t.insert("cfl", w.cfl);
   t.insert("shifting", x.shifting == ShiftingModel::delta_plus ? "delta_plus" : "none");
-  t.insert("shifting_max", x.shifting_max);
   return t;
 }
 

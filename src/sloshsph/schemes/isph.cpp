@@ -32,6 +32,11 @@ void IsphData::resize(std::size_t n) {
 // a wall reached -6e5 Pa and 30 m/s.
 constexpr double kSplashFraction = 0.5;
 
+std::uint8_t free_surface_flag(double fluid_sum, double wall_sum, double total, double full, double threshold) {
+  const double fluid_fraction = fluid_sum / std::max(full - wall_sum, 0.25 * full);
+  return fluid_fraction < kSplashFraction ? 2 : total < threshold * full ? 1 : 0;
+}
+
 double lattice_number_density(KernelType type, double h, double dp) {
   return with_kernel(type, h, [&](const auto& k) {
     const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
@@ -247,11 +252,7 @@ void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput
     });
     const double rho_star = m * wsum;
     p.density[i] = rho_star;
-    // 1: free surface (eq. 2.20). 2: spray, when fluid fills less than kSplashFraction of the
-    // part of the kernel that walls leave free (so a particle in a corner of still water is not
-    // spray, a thin jet along a wall is).
-    const double fluid_fraction = m * (wsum - wall_sum) / std::max(rho_ref - m * wall_sum, 0.25 * rho_ref);
-    d.free_surface[i] = fluid_fraction < kSplashFraction ? 2 : rho_star < threshold * rho_ref ? 1 : 0;
+    d.free_surface[i] = free_surface_flag(m * (wsum - wall_sum), m * wall_sum, rho_star, rho_ref, threshold);
     d.ppe_source[i] = alpha * std::min(0.0, rho_ref - rho_star) / (rho_ref * dt * dt) + (1.0 - alpha) * div / dt;
   }
 }

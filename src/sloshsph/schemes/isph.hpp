@@ -127,4 +127,12 @@ class IsphScheme {
 // divided by the particle mass: the number density of undisturbed fluid (about 1/dp^2).
 double lattice_number_density(KernelType type, double h, double dp);
 
+// The free-surface flag of a fluid particle from its kernel sums, in any one unit (densities or
+// concentrations): `fluid_sum` and `wall_sum` the shares of fluid and wall neighbours, `total` the
+// whole sum with the particle's own share, `full` the sum of undisturbed fluid. 2: spray, when
+// fluid fills less than half of the part of the kernel that walls leave free (so a particle in a
+// corner of still water is not spray, a thin jet along a wall is); 1: free surface, `total` below
+// `threshold` times `full` (eq. 2.20); 0: inside the fluid. The ISPH stage 5 and the WCSPH shift.
+std::uint8_t free_surface_flag(double fluid_sum, double wall_sum, double total, double full, double threshold);
+
 }  // namespace sloshsph

@@ -538,26 +538,24 @@ void WcsphScheme::step(Particles& p, const StepInput& in) {
 
 // The shift of delta-plus-SPH (physics/shifting.hpp; Sun et al. 2017): D = CFL Ma (2h)^2 with
 // CFL = c0 dt / h and Ma = U_max / c0, i.e. 4 h U_max dt for every particle, on the pairs at the
-// end of the step. The free surface is found as in the ISPH scheme (thesis eq. 2.20 with its
-// spray fraction), from the kernel sums of the nominal volume dp^2: surface below 0.9 of a full
-// kernel's sum, spray where fluid fills less than half the part of the kernel that walls leave
-// free (Sun et al. detect it from the eigenvalues of the renormalisation matrix instead; not done).
+// end of the step. The free surface is found as in the ISPH scheme (free_surface_flag: thesis
+// eq. 2.20 with its spray fraction, at ISPH's default threshold 0.9), from the kernel sums m W
+// against rho_ref (Sun et al. detect it from the eigenvalues of the renormalisation matrix
+// instead; not done).
 std::size_t WcsphScheme::shift(Particles& p, double dt, double max_speed) {
+  constexpr double kSurfaceThreshold = 0.9;
   WcsphData& d = data_;
   const PairList& pairs = d.pairs;
-  const double full = p.volume * lattice_number_density(kernel_type_, h_, dp_);  // C of a full kernel
+  const double m = p.mass;
   d.surface.assign(p.n_fluid, kShiftInterior);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    double sum = pairs.self_w(), wall_sum = 0.0;
+    double wsum = pairs.self_w(), wall_sum = 0.0;
     pairs.for_each(i, [&](const Pair& q) {
-      sum += q.w;
+      wsum += q.w;
       if (!p.is_fluid(q.j)) wall_sum += q.w;
     });
-    sum *= p.volume;
-    wall_sum *= p.volume;
-    const double fluid_fraction = (sum - wall_sum) / std::max(full - wall_sum, 0.25 * full);
-    d.surface[i] = fluid_fraction < 0.5 ? kShiftSpray : sum < 0.9 * full ? kShiftSurface : kShiftInterior;
+    d.surface[i] = free_surface_flag(m * (wsum - wall_sum), m * wall_sum, m * wsum, rho_ref_, kSurfaceThreshold);
   }
   const double diffusion = 4.0 * h_ * max_speed * dt;
   return shift_fluid(p, pairs, d.surface, shifting_, [diffusion](std::size_t) { return diffusion; }, &p.density,
