@@ -30,6 +30,7 @@ void set_threads(int threads);
 
 Command add_run_command(CLI::App& app);
 Command add_modes_command(CLI::App& app);
+Command add_linear_command(CLI::App& app);
 Command add_tune_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_report_command(CLI::App& app);

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   for (int k = 0; k < argc; ++k) app::command_line() += (k ? " " : "") + std::string(argv[k]);
 
   std::vector<app::Command> commands = {app::add_run_command(app), app::add_modes_command(app),
+                                        app::add_linear_command(app),
                                         app::add_tune_command(app), app::add_sweep_command(app),
                                         app::add_report_command(app), app::add_resume_command(app),
                                         app::add_validate_command(app), app::add_status_command(app)};

@@ -185,7 +185,12 @@ std::vector<SloshingMode> sloshing_modes(const TankGeometry& tank, double depth,
     }
     // The eigenvectors are M_s-normalised (int_surface phi^2 dx = 1), so m_n / rho = Gamma^2 / lambda.
     const double gamma = participation.dot(eig.eigenvectors().col(k));
-    mode.effective_mass_fraction = gamma * gamma / eig.eigenvalues()(k) / area;
+    const double lambda = eig.eigenvalues()(k);
+    mode.effective_mass_fraction = gamma * gamma / lambda / area;
+    // surface_eta = s phi with phi the M_s-normalised eigenvector and s = scale, so
+    // eta = sum beta_n phi_n has beta_n = s q_n, and beta_n'' + omega^2 beta_n = -Gamma a.
+    mode.horizontal_forcing = gamma / scale;
+    mode.surface_moment = scale * gamma / lambda;
     modes.push_back(std::move(mode));
   }
   return modes;

@@ -31,6 +31,20 @@ struct SloshingMode {
   // rectangle it is 8 tanh(n pi h / L) / (n^3 pi^3 h / L) for odd n and 0 for even n
   // (Graham & Rodriguez 1952); summed over all modes it is 1 minus the impulsive share.
   double effective_mass_fraction = 0.0;
+  // The mode under a horizontal base acceleration a(t) (tank frame; linear/forced_response.hpp):
+  // with the elevation eta = q(t) * surface_eta (the shape above, max 1), the modal coordinate
+  // q (m) obeys q'' + omega^2 q = -horizontal_forcing * a(t). horizontal_forcing = Gamma / s, where
+  // Gamma = int_fluid dphi/dx dA of the mode normalised to int_surface phi^2 dx = 1 and s the
+  // scale from that phi to the shape above (surface_eta = s phi); dimensionless.
+  // For a rectangle of length L, depth h:
+  // -4 tanh(n pi h / L) / (n pi) for odd n, 0 for even n.
+  double horizontal_forcing = 0.0;
+  // int_surface x * surface_eta dx (m^2): the first moment of the shape, which shifts the
+  // liquid's centre of mass, so that the liquid's horizontal momentum relative to the tank is
+  // rho * sum_n q_n' * surface_moment_n (per metre of width). Equal to s Gamma / lambda by
+  // Green's second identity (lambda = omega^2 / g); -2 L^2 / (n pi)^2 for odd n of a rectangle
+  // (x from its left wall).
+  double surface_moment = 0.0;
 };
 
 struct ModalOptions {
