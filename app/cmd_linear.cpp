@@ -2,7 +2,7 @@
 //                      [--compare RUN_DIR] [--periods N] [--set KEY=VALUE]...
 // The linear modal solution from rest of a case's tank under its horizontal base motion
 // (run/linear_case.hpp), written as a time series with the SPH run's column names, and, with
-// --compare, the crest envelope of an SPH run's gauges against it, period by period.
+// --compare, the amplitude envelope of an SPH run's gauges against it, period by period.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -41,9 +41,11 @@ int compare_with_run(const CaseSpec& spec, const LinearCase& r, const std::strin
   if (!std::filesystem::exists(path)) throw InputError(run_dir, "--compare", "no timeseries.csv in the run directory");
   const CsvTable run = read_csv_table(path);
   const double period = comparison_period(spec, r);
-  std::printf("\ncrest of each period (%.6g s) from t = 0: linear against %s, deviation = (SPH - linear) / largest "
-              "linear crest\n",
-              period, path.c_str());
+  const double cutoff = spec.output.lowpass_hz;
+  std::printf("\namplitude (half the crest-to-trough height) of each period (%.6g s) from t = 0, both series "
+              "low-passed at %.3g Hz (output.lowpass_hz; 0: raw): linear against %s; deviation = (SPH - linear) / "
+              "largest linear amplitude\n",
+              period, cutoff, path.c_str());
   double worst = 0.0;
   for (std::size_t g = 0; g < r.gauge_names.size(); ++g) {
     const std::string column = "eta:" + r.gauge_names[g];
@@ -51,13 +53,16 @@ int compare_with_run(const CaseSpec& spec, const LinearCase& r, const std::strin
       std::printf("%s: not in the run\n", column.c_str());
       continue;
     }
-    const EnvelopeComparison c = compare_crest_envelopes(r.response.time, r.response.elevation[g],
-                                                         run.column("time"), run.column(column), 0.0, period, periods);
-    std::printf("%s\n%8s %14s %14s %12s\n", column.c_str(), "period", "linear [mm]", "SPH [mm]", "deviation");
+    const EnvelopeComparison c = compare_envelopes(r.response.time, r.response.elevation[g],
+                                                         run.column("time"), run.column(column), 0.0, period, periods, cutoff);
+    std::printf("%s\n%8s %14s %14s %12s %24s %24s\n", column.c_str(), "period", "linear [mm]", "SPH [mm]",
+                "deviation", "crest, trough linear [mm]", "crest, trough SPH [mm]");
     for (int k = 0; k < periods; ++k)
-      std::printf("%8d %14.4f %14.4f %+11.2f%%\n", k + 1, 1e3 * c.reference[k], 1e3 * c.simulated[k],
-                  100.0 * c.deviation[k]);
-    std::printf("%s: largest deviation %.2f%% of the largest linear crest\n", column.c_str(),
+      std::printf("%8d %14.4f %14.4f %+11.2f%% %11.4f %12.4f %11.4f %12.4f\n", k + 1, 1e3 * c.reference[k],
+                  1e3 * c.simulated[k], 100.0 * c.deviation[k], 1e3 * c.reference_extremes.crest[k],
+                  1e3 * c.reference_extremes.trough[k], 1e3 * c.simulated_extremes.crest[k],
+                  1e3 * c.simulated_extremes.trough[k]);
+    std::printf("%s: largest deviation %.2f%% of the largest linear amplitude\n", column.c_str(),
                 100.0 * c.worst_deviation);
     worst = std::isnan(c.worst_deviation) || std::isnan(worst) ? NAN : std::max(worst, c.worst_deviation);
   }
@@ -77,7 +82,7 @@ Command add_linear_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "linear", "The linear modal solution from rest of a case's tank under its horizontal motion (and an SPH "
-                "run's crests against it)");
+                "run's amplitudes against it)");
   sub->add_option("case", o->case_path, "Case file (TOML)")->required();
   sub->add_option("--modes", o->linear.modes, "Number of sloshing modes (default 10)")->check(CLI::Range(1, 50));
   sub->add_option("--damping", o->linear.damping,
@@ -86,8 +91,8 @@ Command add_linear_command(CLI::App& app) {
                   "mode (e.g. 0.005)");
   sub->add_option("--out", o->out, "Time series to write (default linear.csv): time, x_base, eta:<gauge>, F_w, F_sw");
   sub->add_option("--compare", o->compare,
-                  "A run directory of the same case: print the crest of each gauge in each period against the "
-                  "linear one");
+                  "A run directory of the same case: print the amplitude of each gauge in each period against "
+                  "the linear one");
   sub->add_option("--periods", o->periods, "With --compare: the number of periods from t = 0 (default 8)")
       ->check(CLI::Range(1, 100000));
   add_set_option(sub, o->sets);
