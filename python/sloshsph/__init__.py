@@ -8,7 +8,7 @@ The same engine as the ``sloshsph`` program (docs/python.md):
     eta = run.timeseries["eta:left"]
 
 Cases (``Case``), runs (``run``, ``resume``, ``read_run``/``Run``), sweeps (``sweep``/``Sweep``),
-linear theory (``modes``, ``tune``), analysis (``sloshsph.analysis``) and particle snapshots
+linear theory (``modes``, ``linear``, ``tune``), analysis (``sloshsph.analysis``) and particle snapshots
 (``read_vtu``). Errors: ``CaseError`` (the program's exit 2), ``RunFailed`` (3), ``Interrupted`` (4).
 """
 
@@ -38,6 +38,21 @@ def modes(case, count=4, tank_damping=(), tank_frequency_scale=1.0):
     return _json.loads(text)
 
 
+def linear(case, modes=10, damping="auto"):
+    """The linear modal solution from rest of the case's tank under its horizontal base motion, as
+    ``sloshsph linear`` writes it: {"series": {"time", "eta:<gauge>"..., "F_w", "F_sw"} (lists, every
+    ``output.sample_interval`` to ``time.end``), "modes": [{"omega", "zeta", "horizontal_forcing"}, ...],
+    "damping_model", "ignored"}. ``damping`` is "auto" (the laminar boundary layers of a clean
+    rectangular tank, none for other sections), "none", "boundary-layer", or a ratio for every mode
+    (a number). Raises CaseError for a pitch, a tank on a [structure], or a damping it cannot use."""
+    c = as_case(case)
+    if not 1 <= int(modes) <= 50:
+        raise ValueError(f"modes must be in 1..50, not {modes!r}")
+    if not isinstance(damping, str):
+        damping = repr(float(damping))
+    return _core.linear(c._text, c.source, c.name, c.overrides, int(modes), damping)
+
+
 def tune(case, target_omega, mass=None):
     """The fill depth that gives the case's tank the first sloshing frequency ``target_omega``
     (rad/s), as ``sloshsph tune --json``: {"target_omega", "depth", "omega", "area"} and, with a
@@ -51,5 +66,5 @@ def tune(case, target_omega, mass=None):
                       None if mass is None else float(mass))
 
 
-__all__ = ["Case", "CaseError", "Interrupted", "ProgressInfo", "Run", "RunFailed", "Sweep", "analysis", "modes",
+__all__ = ["Case", "CaseError", "Interrupted", "ProgressInfo", "Run", "RunFailed", "Sweep", "analysis", "linear", "modes",
            "read_frequency_response", "read_pvd", "read_run", "read_vtu", "resume", "run", "sweep", "tune"]

@@ -11,6 +11,7 @@
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/io/case_reader.hpp"
 #include "sloshsph/linear/tuning.hpp"
+#include "sloshsph/run/linear_case.hpp"
 #include "sloshsph/run/modes_summary.hpp"
 #include "sloshsph/run/simulation.hpp"
 
@@ -70,6 +71,34 @@ void bind_cases(py::module_& m) {
       },
       py::arg("text"), py::arg("source"), py::arg("name"), py::arg("overrides"), py::arg("count"),
       py::arg("tank_damping"), py::arg("frequency_scale"), "`sloshsph modes --json` as a JSON text.");
+  m.def(
+      "linear",
+      [](const std::string& text, const std::string& source, const std::string& name,
+         const std::vector<std::string>& overrides, int modes, const std::string& damping) {
+        const CaseSpec spec = load_case(text, source, name, overrides);
+        const LinearCase r = linear_case_response(spec, LinearCaseOptions{modes, damping});
+        py::dict series;
+        series["time"] = r.response.time;
+        for (std::size_t g = 0; g < r.gauge_names.size(); ++g) series[("eta:" + r.gauge_names[g]).c_str()] = r.response.elevation[g];
+        series["F_w"] = r.response.wall_force;
+        series["F_sw"] = r.response.sloshing_force;
+        py::list mode_list;
+        for (std::size_t n = 0; n < r.modes.size(); ++n) {
+          py::dict d;
+          d["omega"] = r.modes[n].omega;
+          d["zeta"] = r.damping[n];
+          d["horizontal_forcing"] = r.modes[n].horizontal_forcing;
+          mode_list.append(d);
+        }
+        py::dict out;
+        out["series"] = series;
+        out["modes"] = mode_list;
+        out["damping_model"] = r.damping_model;
+        out["ignored"] = r.ignored;
+        return out;
+      },
+      py::arg("text"), py::arg("source"), py::arg("name"), py::arg("overrides"), py::arg("modes"),
+      py::arg("damping"), "`sloshsph linear` as a dict (run/linear_case.hpp).");
   m.def(
       "tune",
       [](const std::string& text, const std::string& source, const std::string& name,

@@ -84,3 +84,26 @@ def test_modes_and_tune_match_the_program():
     assert got.keys() == expected.keys()
     for key in expected:
         assert got[key] == pytest.approx(expected[key], rel=1e-9)  # the program prints 10 digits
+
+
+def test_linear_matches_the_program(tmp_path):
+    import csv
+
+    path = os.path.join(CASES, "clean_tank_forced.toml")
+    out_csv = str(tmp_path / "linear.csv")
+    code, out, err = cli("linear", path, "--out", out_csv)
+    assert code == 0, err
+    with open(out_csv) as f:
+        rows = list(csv.DictReader(f))
+    got = sloshsph.linear(path)
+    assert got["damping_model"] == "boundary-layer"
+    assert got["modes"][0]["zeta"] == pytest.approx(5.263e-4, rel=1e-3)  # docs/physics.md
+    series = got["series"]
+    assert len(series["time"]) == len(rows)
+    for name in ("eta:left", "eta:right", "F_w", "F_sw"):
+        for k in (100, len(rows) - 1):
+            assert series[name][k] == pytest.approx(float(rows[k][name]), rel=1e-8, abs=1e-12)  # 10 digits
+    with pytest.raises(sloshsph.CaseError, match="pitch is not implemented"):
+        sloshsph.linear(os.path.join(CASES, "shao_pitch.toml"))
+    with pytest.raises(sloshsph.CaseError, match="is not auto, none, boundary-layer"):
+        sloshsph.linear(path, damping="lots")
