@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -55,11 +56,13 @@ void check_free_decay(const std::vector<std::string>& overrides, const std::stri
     const std::string name = std::string(gauge + 4) + ", " + label;
     testing::report("clean_tank_zeta_" + std::string(gauge + 4), fit.zeta);
     testing::report("clean_tank_omega_error_" + std::string(gauge + 4), fit.omega / omega1 - 1.0);
+    char physical_text[160];
+    std::snprintf(physical_text, sizeof physical_text,
+                  "issue 30 bar 0.5%% of critical; the tank's own laminar damping is %.3f%% (boundary layers, "
+                  "linear/forced_response.hpp)",
+                  100.0 * physical);
     check_bar("free-decay damping ratio (log decrement of " + std::to_string(fit.cycles) + " cycles), gauge " + name,
-              fit.zeta, kDampingBar,
-              "issue 30 bar 0.5% of critical; the tank's own laminar damping is " +
-                  std::to_string(100.0 * physical).substr(0, 5) + "% (boundary layers, linear/forced_response.hpp)",
-              assert_damping);
+              fit.zeta, kDampingBar, physical_text, assert_damping);
     testing::check(Check{.quantity = "free-decay angular frequency, gauge " + name,
                          .unit = "rad/s",
                          .measured = fit.omega,
