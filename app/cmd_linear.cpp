@@ -100,7 +100,7 @@ Command add_linear_command(CLI::App& app) {
             const CaseSpec spec = load_case(o->case_path, o->sets);
             const LinearCase r = linear_case_response(spec, o->linear);
             print_modes(spec, r);
-            write_linear_csv(o->out, spec, r);
+            write_linear_csv(o->out, r);
             std::printf("wrote %s (%zu rows, RK4 step %.3g s)\n", o->out.c_str(), r.response.time.size(),
                         r.response.integration_step);
             if (!o->compare.empty()) return compare_with_run(spec, r, o->compare, o->periods);

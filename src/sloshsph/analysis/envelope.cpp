@@ -10,13 +10,10 @@
 namespace sloshsph {
 namespace {
 
-// y low-passed at cutoff_hz (t uniform), or y itself when the cut-off is off or not below the
-// Nyquist frequency of the sampling.
+// y low-passed at cutoff_hz (t uniform; analysis/filter.hpp).
 std::vector<double> smoothed(const std::vector<double>& t, const std::vector<double>& y, double cutoff_hz) {
-  if (cutoff_hz <= 0.0 || t.size() < 2) return y;
-  const double dt = (t.back() - t.front()) / static_cast<double>(t.size() - 1);
-  if (!(dt > 0.0) || cutoff_hz >= 0.5 / dt) return y;
-  return lowpass_zero_phase(y, dt, cutoff_hz);
+  if (t.size() < 2) return y;
+  return lowpass_if_resolved(y, (t.back() - t.front()) / static_cast<double>(t.size() - 1), cutoff_hz);
 }
 
 std::vector<double> half_heights(const PeriodExtremes& e) {

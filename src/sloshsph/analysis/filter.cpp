@@ -125,4 +125,9 @@ std::vector<double> lowpass_zero_phase(const std::vector<double>& x, double dt, 
                              ext.begin() + static_cast<std::ptrdiff_t>(pad + n));
 }
 
+std::vector<double> lowpass_if_resolved(const std::vector<double>& x, double dt, double cutoff_hz) {
+  if (cutoff_hz <= 0.0 || x.size() < 2 || !(dt > 0.0) || cutoff_hz >= 0.5 / dt) return x;
+  return lowpass_zero_phase(x, dt, cutoff_hz);
+}
+
 }  // namespace sloshsph

@@ -43,4 +43,9 @@ std::vector<double> filter_causal(const std::vector<Biquad>& sections, const std
 std::vector<double> lowpass_zero_phase(const std::vector<double>& x, double dt, double cutoff_hz = 5.0,
                                        int order = 4);
 
+// lowpass_zero_phase at cutoff_hz, or x itself when the cut-off is off (<= 0), x has fewer than
+// 2 samples, or the cut-off is not below the Nyquist frequency 0.5/dt (then filtering would
+// change nothing the samples can show).
+std::vector<double> lowpass_if_resolved(const std::vector<double>& x, double dt, double cutoff_hz);
+
 }  // namespace sloshsph

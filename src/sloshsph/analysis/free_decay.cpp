@@ -5,18 +5,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "sloshsph/analysis/spectrum.hpp"
+
 namespace sloshsph {
 
 FreeDecayFit fit_free_decay(const std::vector<double>& t, const std::vector<double>& y) {
   if (t.size() != y.size() || t.size() < 4) throw std::invalid_argument("fit_free_decay: too few samples");
-  double mean = 0.0;
-  for (double v : y) mean += v;
-  mean /= static_cast<double>(y.size());
-  std::vector<double> ups;  // interpolated up-crossing times of y - mean
-  for (std::size_t i = 1; i < y.size(); ++i) {
-    const double a = y[i - 1] - mean, b = y[i] - mean;
-    if (a < 0.0 && b >= 0.0) ups.push_back(t[i - 1] + (t[i] - t[i - 1]) * (-a) / (b - a));
-  }
+  const std::vector<double> ups = mean_up_crossings(t, y);
   if (ups.size() < 4) throw std::invalid_argument("fit_free_decay: fewer than 3 full cycles");
   std::vector<double> heights;
   std::size_t i = 0;

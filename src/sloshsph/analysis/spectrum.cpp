@@ -123,23 +123,22 @@ double dominant_frequency_fft(const std::vector<double>& x, double dt) {
   return (static_cast<double>(k) + delta) / (static_cast<double>(n) * dt);
 }
 
-double zero_crossing_period(const std::vector<double>& t, const std::vector<double>& x) {
-  if (t.size() != x.size() || t.size() < 2) throw std::invalid_argument("zero-crossing period: bad series");
+std::vector<double> mean_up_crossings(const std::vector<double>& t, const std::vector<double>& x) {
   double mean = 0.0;
   for (double v : x) mean += v;
   mean /= static_cast<double>(x.size());
-  double first = 0.0, last = 0.0;
-  std::size_t crossings = 0;
+  std::vector<double> ups;
   for (std::size_t i = 0; i + 1 < x.size(); ++i) {
     const double a = x[i] - mean, b = x[i + 1] - mean;
-    if (a < 0.0 && b >= 0.0) {
-      const double tc = t[i] + (t[i + 1] - t[i]) * (-a) / (b - a);
-      if (crossings == 0) first = tc;
-      last = tc;
-      ++crossings;
-    }
+    if (a < 0.0 && b >= 0.0) ups.push_back(t[i] + (t[i + 1] - t[i]) * (-a) / (b - a));
   }
-  return crossings < 2 ? 0.0 : (last - first) / static_cast<double>(crossings - 1);
+  return ups;
+}
+
+double zero_crossing_period(const std::vector<double>& t, const std::vector<double>& x) {
+  if (t.size() != x.size() || t.size() < 2) throw std::invalid_argument("zero-crossing period: bad series");
+  const std::vector<double> ups = mean_up_crossings(t, x);
+  return ups.size() < 2 ? 0.0 : (ups.back() - ups.front()) / static_cast<double>(ups.size() - 1);
 }
 
 }  // namespace sloshsph

@@ -35,4 +35,7 @@ double dominant_frequency_fft(const std::vector<double>& x, double dt);
 // fewer than 2 up-crossings.
 double zero_crossing_period(const std::vector<double>& t, const std::vector<double>& x);
 
+// The times at which x crosses its mean upwards (x_i < mean <= x_{i+1}), by linear interpolation.
+std::vector<double> mean_up_crossings(const std::vector<double>& t, const std::vector<double>& x);
+
 }  // namespace sloshsph

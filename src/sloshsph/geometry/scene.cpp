@@ -109,7 +109,8 @@ void add_fill_warning(const CaseSpec& spec, const TankGeometry& tank, std::size_
   for (const Vec2& v : section)
     if (v.y >= tank.y_bottom + depth - 1e-12) x_low = std::min(x_low, v.x), x_high = std::max(x_high, v.x);
   const double width = x_high - x_low;
-  const double missing = section_area(tank, depth) - static_cast<double>(particles) * dp * dp;
+  const double area = section_area(tank, depth);
+  const double missing = area - static_cast<double>(particles) * dp * dp;
   if (!(width > 0.0) || missing <= 0.2 * dp * width) return;
   const double low = missing / width;
   char advice[200];
@@ -124,7 +125,7 @@ void add_fill_warning(const CaseSpec& spec, const TankGeometry& tank, std::size_
                 "fill.depth: the %zu particles hold %.3g%% less water than the section below %.6g m (the lattice of "
                 "spacing dp = %.6g m does not reach the walls and the level): the water settles about %.3g m lower, "
                 "at %.6g m, and a start from rest begins by filling the gap; %s",
-                particles, 100.0 * missing / section_area(tank, depth), depth, dp, low, depth - low, advice);
+                particles, 100.0 * missing / area, depth, dp, low, depth - low, advice);
   warnings.push_back(text);
 }
 

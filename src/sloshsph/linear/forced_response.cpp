@@ -13,10 +13,9 @@ struct ModalState {
   std::vector<double> q, v;
 };
 
-// q'' of every mode at time t and state s (the modal equations of the header).
-std::vector<double> modal_accelerations(const LinearResponseInput& in, double t, const std::vector<double>& q,
+// q'' of every mode under the base acceleration a and state (q, q') (the modal equations of the header).
+std::vector<double> modal_accelerations(const LinearResponseInput& in, double a, const std::vector<double>& q,
                                         const std::vector<double>& v) {
-  const double a = in.base_acceleration(t);
   std::vector<double> acc(q.size());
   for (std::size_t n = 0; n < q.size(); ++n) {
     const double w = in.modes[n].omega;
@@ -34,13 +33,14 @@ void rk4_step(const LinearResponseInput& in, double t, double h, ModalState& s) 
     for (std::size_t n = 0; n < m; ++n) y[n] = x[n] + c * dx[n];
     return y;
   };
-  const std::vector<double> k1q = s.v, k1v = modal_accelerations(in, t, s.q, s.v);
+  const double a_mid = in.base_acceleration(t + h / 2);  // stages 2 and 3
+  const std::vector<double> k1q = s.v, k1v = modal_accelerations(in, in.base_acceleration(t), s.q, s.v);
   const std::vector<double> q2 = shifted(s.q, k1q, h / 2), v2 = shifted(s.v, k1v, h / 2);
-  const std::vector<double> k2v = modal_accelerations(in, t + h / 2, q2, v2);
+  const std::vector<double> k2v = modal_accelerations(in, a_mid, q2, v2);
   const std::vector<double> q3 = shifted(s.q, v2, h / 2), v3 = shifted(s.v, k2v, h / 2);
-  const std::vector<double> k3v = modal_accelerations(in, t + h / 2, q3, v3);
+  const std::vector<double> k3v = modal_accelerations(in, a_mid, q3, v3);
   const std::vector<double> q4 = shifted(s.q, v3, h), v4 = shifted(s.v, k3v, h);
-  const std::vector<double> k4v = modal_accelerations(in, t + h, q4, v4);
+  const std::vector<double> k4v = modal_accelerations(in, in.base_acceleration(t + h), q4, v4);
   for (std::size_t n = 0; n < m; ++n) {
     s.q[n] += h / 6 * (k1q[n] + 2 * v2[n] + 2 * v3[n] + v4[n]);
     s.v[n] += h / 6 * (k1v[n] + 2 * k2v[n] + 2 * k3v[n] + k4v[n]);
@@ -89,11 +89,12 @@ LinearResponse linear_response_from_rest(const LinearResponseInput& in) {
       for (std::size_t n = 0; n < in.modes.size(); ++n) eta += s.q[n] * shape[g][n];
       out.elevation[g].push_back(eta);
     }
-    const std::vector<double> acc = modal_accelerations(in, t, s.q, s.v);
+    const double a = in.base_acceleration(t);
+    const std::vector<double> acc = modal_accelerations(in, a, s.q, s.v);
     double moment = 0.0;
     for (std::size_t n = 0; n < in.modes.size(); ++n) moment += acc[n] * in.modes[n].surface_moment;
     out.sloshing_force.push_back(in.density * moment);
-    out.wall_force.push_back(in.density * (in.still_water_area * in.base_acceleration(t) + moment));
+    out.wall_force.push_back(in.density * (in.still_water_area * a + moment));
   }
   return out;
 }

@@ -79,19 +79,19 @@ LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& o
   in.end_time = spec.time.end;
   in.sample_interval = spec.output.sample_interval;
   out.response = linear_response_from_rest(in);
+  for (double t : out.response.time) out.base_displacement.push_back(base->at(t).displacement.x);
   return out;
 }
 
-void write_linear_csv(const std::string& path, const CaseSpec& spec, const LinearCase& result) {
+void write_linear_csv(const std::string& path, const LinearCase& result) {
   std::vector<std::string> columns{"time", "x_base"};
   for (const std::string& name : result.gauge_names) columns.push_back("eta:" + name);
   columns.push_back("F_w");
   columns.push_back("F_sw");
-  const BaseMotionSource base(spec.excitation, spec.time.end);
   CsvWriter csv(path, columns);
   const LinearResponse& r = result.response;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
-    std::vector<double> row{r.time[k], base.at(r.time[k]).displacement.x};
+    std::vector<double> row{r.time[k], result.base_displacement[k]};
     for (const std::vector<double>& eta : r.elevation) row.push_back(eta[k]);
     row.push_back(r.wall_force[k]);
     row.push_back(r.sloshing_force[k]);

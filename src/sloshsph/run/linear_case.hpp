@@ -25,6 +25,7 @@ struct LinearCase {
   std::vector<std::string> gauge_names;
   std::vector<std::string> ignored;  // parts of the case the linear model leaves out (screens, ...)
   LinearResponse response;
+  std::vector<double> base_displacement;  // m, x of the base at each of response.time
 };
 
 // Throws InputError naming the key when the case cannot be a linear horizontal motion from rest:
@@ -34,6 +35,6 @@ struct LinearCase {
 LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& options);
 
 // The columns `time`, `x_base`, `eta:<gauge>`..., `F_w`, `F_sw` (the SPH run's names and units).
-void write_linear_csv(const std::string& path, const CaseSpec& spec, const LinearCase& result);
+void write_linear_csv(const std::string& path, const LinearCase& result);
 
 }  // namespace sloshsph

@@ -23,13 +23,6 @@ int column_index(const std::vector<std::string>& names, const std::string& name)
   return -1;
 }
 
-// The filtered series, or the raw one when the cut-off is off or not below the Nyquist
-// frequency of the sampling (then filtering would change nothing the samples can show).
-std::vector<double> filtered(const std::vector<double>& x, double dt, double cutoff_hz) {
-  if (cutoff_hz <= 0.0 || x.size() < 2 || cutoff_hz >= 0.5 / dt) return x;
-  return lowpass_zero_phase(x, dt, cutoff_hz);
-}
-
 }  // namespace
 
 const ResponseValue* Response::find(const std::string& name) const {
@@ -50,7 +43,7 @@ Response steady_state_response(const std::vector<std::string>& names, const std:
   r.cutoff_hz = (options.cutoff_hz > 0.0 && options.cutoff_hz < 0.5 / dt) ? options.cutoff_hz : 0.0;
   for (std::size_t k = 1; k < names.size(); ++k) {
     if (!analysed_column(names[k])) continue;
-    const SteadyAmplitude a = steady_state_amplitude(t, filtered(columns[k], dt, r.cutoff_hz), options.period,
+    const SteadyAmplitude a = steady_state_amplitude(t, lowpass_if_resolved(columns[k], dt, r.cutoff_hz), options.period,
                                                      options.cycles);
     r.values.push_back({names[k], units[k], a.avg_max, a.avg_min});
     r.cycles = a.cycles;
@@ -62,7 +55,7 @@ Response steady_state_response(const std::vector<std::string>& names, const std:
   std::optional<CycleEnergy> e;
   if (options.energy && work > 0) e = energy_per_cycle_from_work(t, columns[work], options.period, options.cycles);
   else if (options.energy && force > 0 && base > 0)
-    e = energy_per_cycle(t, filtered(columns[force], dt, r.cutoff_hz), columns[base], options.period, options.cycles);
+    e = energy_per_cycle(t, lowpass_if_resolved(columns[force], dt, r.cutoff_hz), columns[base], options.period, options.cycles);
   if (e) {
     r.energy_per_cycle = e->energy;
     if (options.water_mass > 0.0 && options.amplitude > 0.0)
