@@ -113,9 +113,21 @@ enum class FreeSurfaceModel { air, thesis };
 // particle shifting technique of delta-plus-SPH (Sun et al. 2017) for WCSPH.
 enum class ShiftingModel { none, lind, delta_plus };
 
+// Where the ISPH step solves the pressure (the intermediate positions r*):
+//  euler:    r* = r + dt u* (thesis eq. 2.11), the end of the step predicted by a forward Euler
+//            step. The pressure then acts on the velocity as a force evaluated at the step's end,
+//            and the trapezoidal position update of eq. 2.15 damps an oscillation of frequency w
+//            by about w dt / 4 of critical (docs/physics.md, "The position predictor").
+//  midpoint: r* = r + (dt/2) u*, the middle of the step: a second-order, non-damping scheme.
+enum class PositionPredictor { euler, midpoint };
+
 struct SchemeSpec {
   std::string type = "isph";
   double alpha = 0.01;                   // PPE blending factor (thesis eq. 2.13)
+  // ISPH: > 0 replaces alpha by dt / density_relaxation_time each step, so that the density
+  // term relaxes a compression over a time that does not depend on the step (s; 0: alpha).
+  double density_relaxation_time = 0.0;
+  PositionPredictor predictor = PositionPredictor::euler;  // ISPH: where r* is
   PressureSolve pressure = PressureSolve::implicit_krylov;
   FreeSurfaceModel free_surface = FreeSurfaceModel::air;  // default: air (implicit), thesis (explicit)
   double free_surface_threshold = 0.9;   // rho_n / rho_0 below which a particle is free surface (eq. 2.20)

@@ -102,6 +102,10 @@ ParticleSpec read_particles(TableReader& r) {
 // other way round) is an unknown key.
 void read_isph_keys(TableReader& r, SchemeSpec& s) {
   s.alpha = r.in_range("alpha", s.alpha, 0.0, 1.0);
+  s.density_relaxation_time = r.non_negative("density_relaxation_time", s.density_relaxation_time);
+  if (s.density_relaxation_time > 0.0 && r.has("alpha"))
+    r.fail("density_relaxation_time", "sets the blending factor (alpha = dt / density_relaxation_time); leave "
+                                      "alpha out, or set density_relaxation_time = 0");
   s.pressure = r.choice("pressure", "implicit", {"explicit", "implicit"}) == "explicit" ? PressureSolve::explicit_update
                                                                                          : PressureSolve::implicit_krylov;
   // The explicit update is only stable with the thesis's particle Dirichlet condition
@@ -114,6 +118,11 @@ void read_isph_keys(TableReader& r, SchemeSpec& s) {
   if (explicit_solve && s.free_surface == FreeSurfaceModel::air)
     r.fail("free_surface", "\"air\" needs pressure = \"implicit\" (with the explicit update it is unstable); use \"thesis\"");
   s.free_surface_threshold = r.in_range("free_surface_threshold", s.free_surface_threshold, 0.5, 0.99);
+  s.predictor = r.choice("predictor", "euler", {"euler", "midpoint"}) == "midpoint" ? PositionPredictor::midpoint
+                                                                                    : PositionPredictor::euler;
+  if (explicit_solve && s.predictor == PositionPredictor::midpoint)
+    r.fail("predictor", "\"midpoint\" needs pressure = \"implicit\" (the explicit update reads the density at the end "
+                        "of the step); use \"euler\"");
   s.turbulence = r.boolean("turbulence", s.turbulence);
   s.smagorinsky = r.in_range("smagorinsky", s.smagorinsky, 0.0, 1.0);
   s.ct = r.positive("ct", s.ct);
@@ -798,10 +807,12 @@ static toml::table scheme_table(const SchemeSpec& x) {
                 {"wall_contact", x.wall_contact},
                 {"shifting_max", x.shifting_max}};
   if (x.type == "isph") {
-    t.insert("alpha", x.alpha);
+    if (x.density_relaxation_time > 0.0) t.insert("density_relaxation_time", x.density_relaxation_time);
+    else t.insert("alpha", x.alpha);  // the two exclude each other (read_isph_keys)
     t.insert("pressure", x.pressure == PressureSolve::implicit_krylov ? "implicit" : "explicit");
     t.insert("free_surface", x.free_surface == FreeSurfaceModel::thesis ? "thesis" : "air");
     t.insert("free_surface_threshold", x.free_surface_threshold);
+    t.insert("predictor", x.predictor == PositionPredictor::midpoint ? "midpoint" : "euler");
     t.insert("turbulence", x.turbulence);
     t.insert("negative_pressure", x.clip_negative_pressure ? "clip" : "keep");
     t.insert("smagorinsky", x.smagorinsky);

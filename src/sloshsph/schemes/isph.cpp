@@ -205,14 +205,17 @@ void predict_velocity(const Particles& p, const PairList& pairs, const StepInput
   }
 }
 
-// Eq. 2.11 for fluid; walls stay where they are, and carry u*_w = u_w + dt (g - a_w) (see
-// density_and_ppe_source), worked out here once per wall particle instead of once per pair.
-void predict_position(const Particles& p, const StepInput& in, IsphData& d) {
+// Eq. 2.11 for fluid (r* = r + dt u*, or r + (dt/2) u* with the midpoint predictor, where the
+// pressure of the step then acts at the middle of the step: see PositionPredictor); walls stay
+// where they are, and carry u*_w = u_w + dt (g - a_w) (see density_and_ppe_source), worked out
+// here once per wall particle instead of once per pair.
+void predict_position(const Particles& p, const StepInput& in, PositionPredictor predictor, IsphData& d) {
   const double dt = in.dt;
+  const double reach = predictor == PositionPredictor::midpoint ? 0.5 * dt : dt;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.is_fluid(i)) {
-      d.position_star[i] = p.position[i] + dt * d.velocity_star[i];
+      d.position_star[i] = p.position[i] + reach * d.velocity_star[i];
       continue;
     }
     d.position_star[i] = p.position[i];
@@ -237,6 +240,16 @@ void predict_position(const Particles& p, const StepInput& in, IsphData& d) {
 //    the body-force increment the fluid received (less the wall's own acceleration for a moving
 //    wall). The wall pressure of eq. 2.19 already
 //    imposes dp/dn = rho (g - a).n; with u*_w = 0 the source would impose it a second time.
+// The alpha of eq. 2.13 for a step of dt. With alpha fixed, the density term's weight against the
+// divergence term grows as 1/dt: in div(u(t+dt)) = alpha (div(u*) + |compression|/dt) a compression
+// relaxes over dt/alpha, 50 ms at the thesis's 0.01 and 0.5 ms, half that at 0.25 ms, and the
+// crest of resonant sloshing follows it (docs/validation/notes.md). density_relaxation_time fixes
+// that time instead.
+double blending_factor(const SchemeSpec& scheme, double dt) {
+  if (scheme.density_relaxation_time <= 0.0) return scheme.alpha;
+  return std::min(1.0, dt / scheme.density_relaxation_time);
+}
+
 void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput& in, double alpha, double rho_ref,
                             double threshold, IsphData& d) {
   const double V = p.volume, m = p.mass, w0 = pairs.self_w(), dt = in.dt;
@@ -579,11 +592,11 @@ void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
       static const std::vector<double> none;
       predict_velocity(p, d.pairs, in, nu_, eta2_, scheme_.turbulence,
                        scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
-      predict_position(p, in, d);
+      predict_position(p, in, scheme_.predictor, d);
       break;
     }
     case IsphStage::density_and_ppe_source:
-      density_and_ppe_source(p, d.pairs, in, scheme_.alpha, rho_ref_, scheme_.free_surface_threshold, d);
+      density_and_ppe_source(p, d.pairs, in, blending_factor(scheme_, in.dt), rho_ref_, scheme_.free_surface_threshold, d);
       break;
     case IsphStage::pressure_solve:
       if (scheme_.pressure == PressureSolve::implicit_krylov) solve_pressure_implicit(p, in);

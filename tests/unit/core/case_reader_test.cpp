@@ -201,6 +201,22 @@ TEST(CaseReader, ResolvedCaseReadsBackToTheSameSpec) {
 namespace sloshsph {
 namespace {
 
+// The relaxation time replaces alpha: a resolved case writes one of the two, so that it reads back.
+TEST(CaseReader, DensityRelaxationTimeAndPredictorReadBack) {
+  const CaseSpec a = read_case_text(kMinimal, "case.toml",
+                                    {"scheme.density_relaxation_time=0.05", "scheme.predictor=midpoint"});
+  EXPECT_DOUBLE_EQ(a.scheme.density_relaxation_time, 0.05);
+  EXPECT_EQ(a.scheme.predictor, PositionPredictor::midpoint);
+  const CaseSpec b = read_case_text(resolved_case_toml(a), "resolved.toml");
+  EXPECT_DOUBLE_EQ(b.scheme.density_relaxation_time, 0.05);
+  EXPECT_EQ(b.scheme.predictor, PositionPredictor::midpoint);
+  const CaseSpec c = read_case_text(kMinimal, "case.toml");
+  EXPECT_EQ(c.scheme.density_relaxation_time, 0.0);
+  EXPECT_EQ(c.scheme.predictor, PositionPredictor::euler);
+  expect_error(kMinimal, {"scheme.alpha=0.02", "scheme.density_relaxation_time=0.05"},
+               "scheme.density_relaxation_time", "leave alpha out");
+}
+
 TEST(CaseReader, FreeSurfaceModelFollowsThePressureSolve) {
   EXPECT_EQ(read_case_text(kMinimal, "case.toml", {"scheme.pressure=explicit"}).scheme.free_surface,
             FreeSurfaceModel::thesis);
