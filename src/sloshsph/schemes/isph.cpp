@@ -592,7 +592,11 @@ void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
       static const std::vector<double> none;
       predict_velocity(p, d.pairs, in, nu_, eta2_, scheme_.turbulence,
                        scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
-      predict_position(p, in, scheme_.predictor, d);
+      // The explicit update reads the density at the step's end (the case reader refuses the
+      // midpoint with it; a spec built in code gets the Euler predictor).
+      predict_position(p, in,
+                       scheme_.pressure == PressureSolve::explicit_update ? PositionPredictor::euler : scheme_.predictor,
+                       d);
       break;
     }
     case IsphStage::density_and_ppe_source:
