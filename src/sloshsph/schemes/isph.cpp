@@ -223,6 +223,16 @@ void predict_position(const Particles& p, const StepInput& in, PositionPredictor
   }
 }
 
+// The alpha of eq. 2.13 for a step of dt. With alpha fixed, the density term's weight against the
+// divergence term grows as 1/dt: in div(u(t+dt)) = alpha (div(u*) + |compression|/dt) a compression
+// relaxes over dt/alpha, 50 ms at the thesis's 0.01 and 0.5 ms, half that at 0.25 ms, and the
+// crest of resonant sloshing follows it (docs/validation/notes.md). density_relaxation_time fixes
+// that time instead.
+double blending_factor(const SchemeSpec& scheme, double dt) {
+  if (scheme.density_relaxation_time <= 0.0) return scheme.alpha;
+  return std::min(1.0, dt / scheme.density_relaxation_time);
+}
+
 // Kernel-summed density at r*, the free-surface flag and the right-hand side of the
 // blended PPE.
 //  * rho* = m sum_j W(r*_ij), the density at the intermediate positions (eq. 2.12 by
@@ -240,16 +250,6 @@ void predict_position(const Particles& p, const StepInput& in, PositionPredictor
 //    the body-force increment the fluid received (less the wall's own acceleration for a moving
 //    wall). The wall pressure of eq. 2.19 already
 //    imposes dp/dn = rho (g - a).n; with u*_w = 0 the source would impose it a second time.
-// The alpha of eq. 2.13 for a step of dt. With alpha fixed, the density term's weight against the
-// divergence term grows as 1/dt: in div(u(t+dt)) = alpha (div(u*) + |compression|/dt) a compression
-// relaxes over dt/alpha, 50 ms at the thesis's 0.01 and 0.5 ms, half that at 0.25 ms, and the
-// crest of resonant sloshing follows it (docs/validation/notes.md). density_relaxation_time fixes
-// that time instead.
-double blending_factor(const SchemeSpec& scheme, double dt) {
-  if (scheme.density_relaxation_time <= 0.0) return scheme.alpha;
-  return std::min(1.0, dt / scheme.density_relaxation_time);
-}
-
 void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput& in, double alpha, double rho_ref,
                             double threshold, IsphData& d) {
   const double V = p.volume, m = p.mass, w0 = pairs.self_w(), dt = in.dt;
