@@ -74,6 +74,8 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
       }
     shifting_.w_dp = k.w(dp);
   });
+  // The explicit update reads the density at the step's end; the case reader refuses the pair.
+  assert(!(scheme_.pressure == PressureSolve::explicit_update && scheme_.predictor == PositionPredictor::midpoint));
   shifting_.coefficient = spec.scheme.shifting_coefficient;
   shifting_.h = h;
   shifting_.dp = dp_;
@@ -592,11 +594,7 @@ void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
       static const std::vector<double> none;
       predict_velocity(p, d.pairs, in, nu_, eta2_, scheme_.turbulence,
                        scheme_.repulsive_walls ? repulsion_strength_ : none, scheme_.repulsive_range * h_, d);
-      // The explicit update reads the density at the step's end (the case reader refuses the
-      // midpoint with it; a spec built in code gets the Euler predictor).
-      predict_position(p, in,
-                       scheme_.pressure == PressureSolve::explicit_update ? PositionPredictor::euler : scheme_.predictor,
-                       d);
+      predict_position(p, in, scheme_.predictor, d);
       break;
     }
     case IsphStage::density_and_ppe_source:
