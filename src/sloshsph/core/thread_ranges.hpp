@@ -17,31 +17,25 @@ namespace sloshsph {
 
 class ThreadRanges {
  public:
-  // Splits rows [0, n) into `parts` contiguous ranges whose sums of cost(i) (a whole number) are
+  // Splits rows [0, n) into `parts` contiguous ranges whose sums of cost(i) (non-negative) are
   // as equal as the rows allow (equal row counts where every cost is 0). Two passes over the rows.
   template <class Cost>
   void balance(std::size_t n, int parts, Cost&& cost) {
-    if (parts <= 1) {
-      even(n, 1);  // one thread: nothing to weigh
-      return;
-    }
-    const auto p = static_cast<std::size_t>(parts);
-    std::size_t total = 0;
-    for (std::size_t i = 0; i < n; ++i) total += static_cast<std::size_t>(cost(i));
-    if (total == 0) {
+    parts = parts < 1 ? 1 : parts;
+    double total = 0.0;
+    for (std::size_t i = 0; i < n; ++i) total += static_cast<double>(cost(i));
+    if (!(total > 0.0)) {
       even(n, parts);
       return;
     }
-    bounds_.assign(p + 1, n);
+    bounds_.assign(static_cast<std::size_t>(parts) + 1, n);
     bounds_[0] = 0;
     // Range k ends at the first row whose running cost reaches k / parts of the total.
-    std::size_t running = 0, k = 1, target = total / p;
-    for (std::size_t i = 0; i < n && k < p; ++i) {
-      while (k < p && running >= target) {
-        bounds_[k++] = i;
-        target = total * k / p;
-      }
-      running += static_cast<std::size_t>(cost(i));
+    double running = 0.0;
+    int k = 1;
+    for (std::size_t i = 0; i < n && k < parts; ++i) {
+      while (k < parts && running >= total * k / parts) bounds_[static_cast<std::size_t>(k++)] = i;
+      running += static_cast<double>(cost(i));
     }
   }
 

@@ -75,7 +75,6 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
     offset_[i + 1] = c;
   });
   ranges_.balance(n, threads, [&](std::size_t i) { return offset_[i + 1] + 2; });
-  fluid_ranges_.balance(n_fluid, threads, [&](std::size_t i) { return offset_[i + 1] + 4; });
   for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
   index_.resize(offset_[n]);
   parallel_for_ranges(ranges_, [&](std::size_t i) {
@@ -91,8 +90,7 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
 std::size_t NeighbourList::memory_bytes() const {
   return offset_.capacity() * sizeof(std::size_t) + index_.capacity() * sizeof(std::uint32_t) +
          position_at_build_.capacity() * sizeof(Vec2) + grid_.sorted().capacity() * sizeof(std::uint32_t) +
-         grid_.cell_start().capacity() * sizeof(std::uint32_t) + ranges_.memory_bytes() +
-         fluid_ranges_.memory_bytes();
+         grid_.cell_start().capacity() * sizeof(std::uint32_t) + ranges_.memory_bytes();
 }
 
 std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::size_t n_fluid, double cell_size) {

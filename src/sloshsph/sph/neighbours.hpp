@@ -85,11 +85,6 @@ class NeighbourList {
   double skin() const { return skin_; }
   std::size_t builds() const { return builds_; }
   std::size_t n_fluid() const { return n_fluid_at_build_; }  // the fluid rows (the first) of the last build
-  // The rows split between the threads by their lengths (the last build's filling pass), and the
-  // fluid rows [0, n_fluid()) alone split by their lengths: the pair layer's splits, worked out once
-  // per build (a row's pairs within the support are about two thirds of its Verlet row, anywhere).
-  const ThreadRanges& row_ranges() const { return ranges_; }
-  const ThreadRanges& fluid_row_ranges() const { return fluid_ranges_; }
   const CellGrid& grid() const { return grid_; }
   std::size_t memory_bytes() const;
 
@@ -108,8 +103,7 @@ class NeighbourList {
   std::vector<Vec2> position_at_build_;
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> index_;
-  ThreadRanges ranges_;        // the build's rows split between the threads
-  ThreadRanges fluid_ranges_;  // the build's fluid rows split between the threads
+  ThreadRanges ranges_;  // the build's rows split between the threads
 };
 
 // Fluid order that follows the cells of a grid of the given size (for memory locality).

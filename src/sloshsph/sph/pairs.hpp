@@ -22,6 +22,7 @@
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
 // stage that used to visit the skin's pairs added exact zeros for them (W = F = 0 for q >= 2),
 // which changes no sum: the results are the same bits.
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -66,18 +67,12 @@ class PairList {
     j_.resize(nl.total_pairs());
     w_.resize(nl.total_pairs());
     f_.resize(nl.total_pairs());
-    has_fluid_rows_ = first_row == 0;
     if (n == 0) return;
     const std::uint32_t* index = nl.begin(0);
-    // Split by the rows' Verlet lengths (the walls' rows, after the fluid's, are short): the
-    // neighbour list's own split of its last build, or a split of the rows from first_row on.
-    const ThreadRanges* rows = &nl.row_ranges();
-    if (first_row > 0 || rows->rows() != n) {
-      ranges_.balance(n, omp_get_max_threads(),
-                      [&](std::size_t i) { return i < first_row ? 0 : nl.offset(i + 1) - nl.offset(i) + 2; });
-      rows = &ranges_;
-    }
-    parallel_for_ranges(*rows, [&](std::size_t i) {
+    // Split by the rows' Verlet lengths: the walls' rows, after the fluid's, are short.
+    ranges_.balance(n, omp_get_max_threads(),
+                    [&](std::size_t i) { return i < first_row ? 0 : nl.offset(i + 1) - nl.offset(i) + 2; });
+    parallel_for_ranges(ranges_, [&](std::size_t i) {
       if (i < first_row) {
         end_[i] = nl.offset(i);
         return;
@@ -99,6 +94,9 @@ class PairList {
       if (cubic_) fill_kernel(cubic_spline_, i, out);
       else fill_kernel(wendland_, i, out);
     });
+    // The stages' loops over the fluid: the free surface's rows, last in the cell order, are short.
+    const std::size_t fluid = first_row == 0 ? std::min(nl.n_fluid(), n) : 0;
+    fluid_rows_.balance(fluid, omp_get_max_threads(), [&](std::size_t i) { return end_[i] - nl.offset(i) + 4; });
   }
 
   void build(const WendlandC2& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
@@ -115,12 +113,11 @@ class PairList {
   }
 
   // Calls body(i) for the fluid rows i in [0, n_fluid) on all threads, split between them by their
-  // lengths as the neighbour list split them (the free surface's rows, last in the cell order, are
-  // short); evenly where the last build did not list these rows (from a first_row > 0).
+  // pair counts (evenly where the last build did not list these rows: from a first_row > 0).
   template <class Body>
   void parallel_for_fluid(std::size_t n_fluid, Body&& body) const {
-    if (has_fluid_rows_ && nl_->fluid_row_ranges().rows() == n_fluid) {
-      parallel_for_ranges(nl_->fluid_row_ranges(), body);
+    if (fluid_rows_.rows() == n_fluid) {
+      parallel_for_ranges(fluid_rows_, body);
       return;
     }
 #pragma omp parallel for schedule(static)
@@ -133,7 +130,8 @@ class PairList {
   std::size_t rows() const { return end_.size(); }
   std::size_t memory_bytes() const {
     return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t) +
-           (w_.capacity() + f_.capacity()) * sizeof(double) + ranges_.memory_bytes();
+           (w_.capacity() + f_.capacity()) * sizeof(double) + ranges_.memory_bytes() +
+           fluid_rows_.memory_bytes();
   }
 
  private:
@@ -171,8 +169,8 @@ class PairList {
   std::vector<std::size_t> end_;  // row i's pairs: slots [nl.offset(i), end_[i])
   std::vector<std::uint32_t> j_;
   std::vector<double> w_, f_;  // W and F of the pair in the same slot
-  ThreadRanges ranges_;        // the rows from a first_row > 0 split between the threads
-  bool has_fluid_rows_ = false;  // the last build listed the fluid rows
+  ThreadRanges ranges_;        // the build's rows split between the threads
+  ThreadRanges fluid_rows_;    // the fluid rows split between the threads by their pair counts
 };
 
 }  // namespace sloshsph

@@ -13,9 +13,9 @@ namespace sloshsph {
 namespace {
 
 // The rows of the PPE of a tank in miniature: 700 fluid rows of cost 25, then 300 wall rows of 8.
-std::size_t ppe_like_cost(std::size_t i) { return i < 700 ? 25 : 8; }
+double ppe_like_cost(std::size_t i) { return i < 700 ? 25.0 : 8.0; }
 
-double range_cost(const ThreadRanges& r, int part, std::size_t (*cost)(std::size_t)) {
+double range_cost(const ThreadRanges& r, int part, double (*cost)(std::size_t)) {
   double sum = 0.0;
   for (std::size_t i = r.begin(part); i < r.end(part); ++i) sum += cost(i);
   return sum;
@@ -90,7 +90,7 @@ TEST(ThreadRanges, ParallelLoopVisitsEveryRowOnce) {
 
 TEST(ThreadRanges, ZeroCostsSplitEvenly) {
   ThreadRanges r;
-  r.balance(10, 2, [](std::size_t) { return 0; });
+  r.balance(10, 2, [](std::size_t) { return 0.0; });
   EXPECT_EQ(r.end(0), 5u);
   EXPECT_EQ(r.end(1), 10u);
 }
