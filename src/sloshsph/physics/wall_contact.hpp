@@ -24,8 +24,6 @@
 // pairs together in the plate's case; this only moves particles that are already outside.)
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <vector>
 
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/core/vec2.hpp"
@@ -49,23 +47,17 @@ inline Vec2 container_normal(const TankGeometry& tank, Vec2 p, double eps) {
 
 // The wall-contact step above on the fluid particles of `p`. `distance` is the sampled signed
 // distance (a cheap first test: bilinear between grid nodes `grid` apart, so within sqrt(2) grid
-// of the exact value, the distance being 1-Lipschitz), `tank` the exact one. The first test, one
-// grid look-up per particle, runs on all threads; the corrections of the few particles it leaves
-// run on one, in particle order, so that the force sum does not depend on the thread count.
+// of the exact value, the distance being 1-Lipschitz), `tank` the exact one. Serial, so that the
+// force sum does not depend on the thread count; the first test is one grid look-up per particle.
 inline WallContact keep_fluid_in_tank(Particles& p, const ContainerDistance& distance, const TankGeometry& tank,
                                       double dp, double grid, double dt) {
   const double contact = 0.25 * dp;
-  std::vector<std::uint8_t> near(p.n_fluid);
-#pragma omp parallel for schedule(static)
+  WallContact out;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     // A non-finite position is not a contact: the driver's check reports it (it was counted
     // as a correction before, so the Faltinsen WCSPH run's last row showed 2 contacts).
-    const Vec2 r = p.position[i];
-    near[i] = std::isfinite(r.x) && std::isfinite(r.y) && distance(r) < contact + 1.5 * grid;
-  }
-  WallContact out;
-  for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    if (!near[i]) continue;
+    if (!std::isfinite(p.position[i].x) || !std::isfinite(p.position[i].y)) continue;
+    if (distance(p.position[i]) >= contact + 1.5 * grid) continue;
     const double d = tank.signed_distance(p.position[i]);
     if (d >= contact) continue;
     const Vec2 n = container_normal(tank, p.position[i], 1e-3 * dp);

@@ -17,14 +17,15 @@ namespace sloshsph {
 // averaged out. Writes the fluid densities to `out` (size >= n_fluid); reads p.density.
 inline void shepard_density(const Particles& p, const PairList& pairs, std::vector<double>& out) {
   const double m = p.mass, w0 = pairs.self_w();
-  pairs.parallel_for_fluid(p.n_fluid, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
     double num = m * w0, den = m * w0 / p.density[i];
     pairs.for_each(i, [&](const Pair& q) {
       num += m * q.w;
       den += m * q.w / p.density[q.j];
     });
     out[i] = num / den;
-  });
+  }
 }
 
 // Shao eqs. 29-30 for the virtual (wall) particles, interpolated from the fluid around them

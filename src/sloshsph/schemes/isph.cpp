@@ -1,7 +1,5 @@
 #include "sloshsph/schemes/isph.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -89,7 +87,6 @@ std::size_t IsphData::memory_bytes() const {
   const std::size_t per = 4 * sizeof(Vec2) + sizeof(double) + 1 + sizeof(SymTensor2);
   return n * per + extra_acceleration.capacity() * sizeof(Vec2) + ppe_row.capacity() * sizeof(int) +
          ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
-         ppe_assembly_rows.memory_bytes() +
          ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
          krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2) +
          multigrid_rows.capacity() * sizeof(std::uint32_t) + shifting.memory_bytes() +
@@ -161,10 +158,11 @@ namespace {
 void sps_stress(const Particles& p, const PairList& pairs, double cs, double ct, double dp,
                 std::vector<SymTensor2>& tau) {
   const SpsClosure closure{(cs * dp) * (cs * dp), ct * dp};
-  pairs.parallel_for_fluid(p.n_fluid, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
     double nu_t = 0.0;
     tau[i] = sps_stress_of(velocity_gradient(pairs, p.velocity, p.volume, i), closure, nu_t);
-  });
+  }
 }
 
 // Eq. 2.10: u* = u + dt (nu lap u + div(tau)/rho + body force). Laminar term eq. 2.16 with
@@ -174,7 +172,8 @@ void predict_velocity(const Particles& p, const PairList& pairs, const StepInput
                       bool turbulence, const std::vector<double>& repulsion, double repulsion_range, IsphData& d) {
   const double V = p.volume;
   const bool repulsive = !repulsion.empty();
-  pairs.parallel_for_fluid(p.n_fluid, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = p.position[i], ui = p.velocity[i];
     const SymTensor2 ti = turbulence ? d.sps_stress[i] : SymTensor2{};
     Vec2 a_fluid, a_wall;
@@ -205,7 +204,7 @@ void predict_velocity(const Particles& p, const PairList& pairs, const StepInput
     d.velocity_old[i] = ui;
     const Vec2 extra = d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i];
     d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.frame.at(ri, ui) + extra);
-  });
+  }
 }
 
 // Eq. 2.11 for fluid (r* = r + dt u*, or r + (dt/2) u* with the midpoint predictor, where the
@@ -256,7 +255,8 @@ double blending_factor(const SchemeSpec& scheme, double dt) {
 void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput& in, double alpha, double rho_ref,
                             double threshold, IsphData& d) {
   const double V = p.volume, m = p.mass, w0 = pairs.self_w(), dt = in.dt;
-  pairs.parallel_for_fluid(p.n_fluid, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ui = d.velocity_star[i];
     double wsum = w0, wall_sum = 0.0, div = 0.0;
     pairs.for_each(i, [&](const Pair& q) {
@@ -269,7 +269,7 @@ void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput
     p.density[i] = rho_star;
     d.free_surface[i] = free_surface_flag(m * (wsum - wall_sum), m * wall_sum, rho_star, rho_ref, threshold);
     d.ppe_source[i] = alpha * std::min(0.0, rho_ref - rho_star) / (rho_ref * dt * dt) + (1.0 - alpha) * div / dt;
-  });
+  }
 }
 
 // Eq. 2.14 with the symmetric gradient of eq. 2.4 at r*:
@@ -278,7 +278,8 @@ void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput
 // the base shear.
 void correct_and_advance(Particles& p, const PairList& pairs, double dt, double rho0, IsphData& d) {
   const double c = p.volume / rho0;
-  pairs.parallel_for_fluid(p.n_fluid, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
     const Vec2 ri = d.position_star[i];
     const double pi = p.pressure[i];
     Vec2 a_fluid, a_wall;
@@ -293,7 +294,7 @@ void correct_and_advance(Particles& p, const PairList& pairs, double dt, double 
     d.wall_acceleration[i] += a_wall;
     p.position[i] += 0.5 * dt * (d.velocity_old[i] + u_new);
     p.velocity[i] = u_new;
-  });
+  }
 }
 
 // Particle shifting at the end of the step (physics/shifting.hpp: Lind et al. 2012,
@@ -497,14 +498,12 @@ void IsphScheme::assemble_ppe(const Particles& p, const StepInput& in) {
   d.ppe_matrix.reserve_rows(d.ppe_row_capacity);
   d.ppe_rhs.resize(rows);
   d.ppe_solution.resize(rows);
-  // Split by the rows' pair counts: the wall rows, after the fluid's, are short.
-  d.ppe_assembly_rows.balance(rows, omp_get_max_threads(), [&](std::size_t row) { return d.ppe_row_capacity[row] + 2; });
-  parallel_for_ranges(d.ppe_assembly_rows, [&](std::size_t row) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t row = 0; row < rows; ++row) {
     const std::size_t i = d.ppe_particle[row];
     d.ppe_solution[row] = p.pressure[i];
     d.ppe_rhs[row] = assemble_ppe_row(p, in, i, row);
-  });
-  d.ppe_matrix.split_rows();
+  }
 }
 
 // The fluid particles of the PPE's blocks that no p = 0 condition reaches (rows_without_anchor)

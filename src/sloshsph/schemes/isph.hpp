@@ -36,7 +36,6 @@ struct IsphData {
   std::vector<int> ppe_row;
   std::vector<std::uint32_t> ppe_particle;
   std::vector<std::size_t> ppe_row_capacity;
-  ThreadRanges ppe_assembly_rows;  // the assembly's rows split between the threads by their pair counts
   SparseRows ppe_matrix;
   std::vector<double> ppe_rhs, ppe_solution;
   BicgstabWork krylov;

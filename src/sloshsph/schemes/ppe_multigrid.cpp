@@ -12,12 +12,9 @@ namespace sloshsph {
 
 namespace {
 
-// Loops shorter than this run on one thread: on the coarsest levels the fork costs more than the
-// work. (A loop's result does not depend on it: every loop is a gather.) 512 rather than 2,048:
-// the first coarse level of the Tait tank at dp = 7 mm (about 900 rows of about 20 entries) then
-// runs on both threads, 3-6% less wall time a step on two threads (docs/performance.md, "Two
-// threads: rows split by their cost").
-constexpr std::size_t kParallelRows = 512;
+// Loops shorter than this run on one thread: on the coarse levels the fork costs more than the
+// work. (A loop's result does not depend on it: every loop is a gather.)
+constexpr std::size_t kParallelRows = 2048;
 
 constexpr std::size_t kMaxLevels = 40;
 
@@ -107,7 +104,6 @@ void galerkin(const SparseRows& A, const std::vector<double>& inverse_diagonal, 
       }
     }
   }
-  L.A.split_rows();
   L.inverse_diagonal.resize(rows);
   for (std::size_t I = 0; I < rows; ++I) L.inverse_diagonal[I] = L.A.inverse_diagonal(I);
   L.b.resize(rows);
@@ -138,7 +134,9 @@ struct LevelView {
 
 // r = b - A x.
 void residual(const LevelView& v) {
-  for_each_row(*v.A, kParallelRows, [&](std::size_t i) { (*v.r)[i] = (*v.b)[i] - v.A->row_times(i, *v.x); });
+  const std::size_t n = v.A->rows();
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t i = 0; i < n; ++i) (*v.r)[i] = (*v.b)[i] - v.A->row_times(i, *v.x);
 }
 
 // x += weight D^-1 r.
@@ -284,7 +282,6 @@ void load_multigrid(Multigrid& mg, StateReader& r) {
     L.member_begin = r.array<std::size_t>("multigrid.member_begin");
     L.member = r.array<std::uint32_t>("multigrid.member");
     L.parent = r.array<std::uint32_t>("multigrid.parent");
-    L.A.split_rows();
     const std::size_t rows = L.A.rows();
     L.b.resize(rows);
     L.x.resize(rows);

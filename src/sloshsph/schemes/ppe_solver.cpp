@@ -2,8 +2,6 @@
 
 #include "sloshsph/schemes/ppe_multigrid.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -33,18 +31,13 @@ void SparseRows::reserve_rows(const std::vector<std::size_t>& capacity) {
 
 std::size_t SparseRows::memory_bytes() const {
   return (slot_begin.capacity() + slot_end.capacity()) * sizeof(std::size_t) +
-         column.capacity() * sizeof(std::uint32_t) + value.capacity() * sizeof(double) + thread_rows.memory_bytes();
-}
-
-void SparseRows::split_rows() {
-  // A row's cost: its entries, and about two entries' worth for the row's own loads and store.
-  thread_rows.balance(rows(), omp_get_max_threads(), [&](std::size_t r) { return slot_end[r] - slot_begin[r] + 2; });
+         column.capacity() * sizeof(std::uint32_t) + value.capacity() * sizeof(double);
 }
 
 std::size_t BicgstabWork::memory_bytes() const {
   std::size_t n = block_sums.capacity();
   for (const auto* v : {&inverse_diagonal, &r, &r0, &p, &v, &t, &y}) n += v->capacity();
-  return n * sizeof(double) + blocks.memory_bytes();
+  return n * sizeof(double);
 }
 
 namespace {
@@ -53,23 +46,15 @@ namespace {
 // depend on the thread count, so neither does any sum.
 constexpr std::size_t kBlock = 256;
 
-// `split`: the blocks split between the threads (for a body with a product by the matrix, as its
-// rows are), or nothing for equal shares.
 template <int K, class Body>
-std::array<double, K> blocked_sums(std::size_t n, std::vector<double>& sums, const ThreadRanges* split,
-                                   const Body& body) {
+std::array<double, K> blocked_sums(std::size_t n, std::vector<double>& sums, const Body& body) {
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   sums.resize(blocks * K);
-  auto block_sum = [&](std::size_t b) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < blocks; ++b) {
     std::array<double, K> part{};
     body(b * kBlock, std::min(n, (b + 1) * kBlock), part);
     for (int k = 0; k < K; ++k) sums[b * K + k] = part[k];
-  };
-  if (split && split->rows() == blocks) {
-    parallel_for_ranges(*split, block_sum);
-  } else {
-#pragma omp parallel for schedule(static)
-    for (std::size_t b = 0; b < blocks; ++b) block_sum(b);
   }
   std::array<double, K> total{};
   for (std::size_t b = 0; b < blocks; ++b)
@@ -79,8 +64,8 @@ std::array<double, K> blocked_sums(std::size_t n, std::vector<double>& sums, con
 
 // r = b - A x; returns |r|^2.
 double residual(const SparseRows& A, const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
-                std::vector<double>& sums, const ThreadRanges& split) {
-  return blocked_sums<1>(b.size(), sums, &split, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
+                std::vector<double>& sums) {
+  return blocked_sums<1>(b.size(), sums, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
     for (std::size_t i = i0; i < i1; ++i) {
       r[i] = b[i] - A.row_times(i, x);
       acc[0] += r[i] * r[i];
@@ -95,9 +80,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
   const std::size_t n = b.size();
   for (auto* v : {&w.inverse_diagonal, &w.r, &w.r0, &w.p, &w.v, &w.t, &w.y}) v->resize(n);
   KrylovReport report;
-  if (A.thread_rows.rows() == n) w.blocks.blocks_of(A.thread_rows, kBlock);
-  else w.blocks.even((n + kBlock - 1) / kBlock, omp_get_max_threads());
-  const double b2 = blocked_sums<1>(n, w.block_sums, nullptr, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
+  const double b2 = blocked_sums<1>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
     for (std::size_t i = i0; i < i1; ++i) {
       acc[0] += b[i] * b[i];
       w.inverse_diagonal[i] = A.inverse_diagonal(i);
@@ -108,7 +91,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
     report.converged = true;
     return report;
   }
-  double r2 = residual(A, b, x, w.r, w.block_sums, w.blocks);
+  double r2 = residual(A, b, x, w.r, w.block_sums);
   w.r0 = w.r;
   double r0_2 = r2;
   std::fill(w.p.begin(), w.p.end(), 0.0);
@@ -124,7 +107,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
     rho = r0_r;
     if (std::abs(rho) < eps2 * r0_2) {
       // r has become orthogonal to r0: start again from here with r0 = r.
-      r2 = residual(A, b, x, w.r, w.block_sums, w.blocks);
+      r2 = residual(A, b, x, w.r, w.block_sums);
       w.r0 = w.r;
       rho = r0_2 = r2;
       if (restarts++ == 0) i = 0;
@@ -137,7 +120,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
       if (!multigrid) w.y[k] = w.inverse_diagonal[k] * w.p[k];
     }
     if (multigrid) apply_multigrid(A, *multigrid, w.p, w.y);
-    const double r0_v = blocked_sums<1>(n, w.block_sums, &w.blocks, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
+    const double r0_v = blocked_sums<1>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 1>& acc) {
       for (std::size_t k = i0; k < i1; ++k) {
         w.v[k] = A.row_times(k, w.y);
         acc[0] += w.r0[k] * w.v[k];
@@ -151,7 +134,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
       if (!multigrid) w.y[k] = w.inverse_diagonal[k] * w.r[k];
     }
     if (multigrid) apply_multigrid(A, *multigrid, w.r, w.y);
-    const auto ts = blocked_sums<2>(n, w.block_sums, &w.blocks, [&](std::size_t i0, std::size_t i1, std::array<double, 2>& acc) {
+    const auto ts = blocked_sums<2>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 2>& acc) {
       for (std::size_t k = i0; k < i1; ++k) {
         w.t[k] = A.row_times(k, w.y);
         acc[0] += w.t[k] * w.t[k];
@@ -159,7 +142,7 @@ KrylovReport solve_bicgstab(const SparseRows& A, const std::vector<double>& b, s
       }
     });
     omega = ts[0] > 0.0 ? ts[1] / ts[0] : 0.0;
-    const auto next = blocked_sums<2>(n, w.block_sums, nullptr, [&](std::size_t i0, std::size_t i1, std::array<double, 2>& acc) {
+    const auto next = blocked_sums<2>(n, w.block_sums, [&](std::size_t i0, std::size_t i1, std::array<double, 2>& acc) {
       for (std::size_t k = i0; k < i1; ++k) {
         x[k] += omega * w.y[k];
         w.r[k] -= omega * w.t[k];

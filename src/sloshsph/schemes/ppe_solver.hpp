@@ -13,8 +13,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "sloshsph/core/thread_ranges.hpp"
-
 namespace sloshsph {
 
 struct Multigrid;
@@ -55,27 +53,7 @@ struct SparseRows {
   // Reserves `capacity[r]` slots for each row r (and empties all rows).
   void reserve_rows(const std::vector<std::size_t>& capacity);
   std::size_t memory_bytes() const;
-
-  // The rows split between the threads by their lengths, for the products (the PPE's wall rows
-  // are a third as long as its fluid rows): set by split_rows() once the rows are filled.
-  ThreadRanges thread_rows;
-  void split_rows();
 };
-
-// Calls body(r) for every row of A on all threads, split by A.thread_rows (by equal row counts
-// where split_rows() was not called for these rows), or on one thread up to `serial_rows` rows.
-template <class Body>
-void for_each_row(const SparseRows& A, std::size_t serial_rows, Body&& body) {
-  const std::size_t n = A.rows();
-  if (n <= serial_rows) {
-    for (std::size_t r = 0; r < n; ++r) body(r);
-  } else if (A.thread_rows.rows() == n) {
-    parallel_for_ranges(A.thread_rows, body);
-  } else {
-#pragma omp parallel for schedule(static)
-    for (std::size_t r = 0; r < n; ++r) body(r);
-  }
-}
 
 struct KrylovReport {
   int iterations = 0;
@@ -87,7 +65,6 @@ struct KrylovReport {
 struct BicgstabWork {
   std::vector<double> inverse_diagonal, r, r0, p, v, t, y;
   std::vector<double> block_sums;
-  ThreadRanges blocks;  // the sums' blocks split between the threads as the matrix's rows are
   std::size_t memory_bytes() const;
 };
 

@@ -251,7 +251,8 @@ void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const 
            WcsphData& d) {
   const std::size_t nf = p.n_fluid;
   const double m = t.mass;
-  pairs.parallel_for_fluid(nf, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < nf; ++i) {
     const Vec2 ui = p.velocity[i];
     const double rho_i = p.density[i], pi = p.pressure[i];
     const Mat2 L = t.correct ? d.correction[i] : Mat2{};
@@ -300,7 +301,7 @@ void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const 
     d.acceleration[i] = a_fluid + a_wall;
     d.wall_acceleration[i] = a_wall;
     d.xsph[i] = t.xsph * xs;
-  });
+  }
 }
 
 // The whole acceleration of fluid particle i at (r, u): the evaluated rates, the frame's body

@@ -1,7 +1,5 @@
 #include "sloshsph/sph/neighbours.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <limits>
 
@@ -50,13 +48,6 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
   const double radius = support_ + skin_;
   const double r2 = radius * radius;
   grid_.build(position, 0, n, radius);
-  // The counting pass is split by the last build's row lengths (the rows keep their kind and
-  // nearly their neighbourhoods between builds), the filling pass by this build's counts.
-  const int threads = omp_get_max_threads();
-  if (built_ && offset_.size() == n + 1)
-    ranges_.balance(n, threads, [&](std::size_t i) { return offset_[i + 1] - offset_[i] + 2; });
-  else
-    ranges_.even(n, threads);
   offset_.assign(n + 1, 0);
 
   // A wall particle never lists another wall particle.
@@ -69,18 +60,19 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
     });
   };
 
-  parallel_for_ranges(ranges_, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
     std::size_t c = 0;
     for_each_neighbour(i, [&](std::uint32_t) { ++c; });
     offset_[i + 1] = c;
-  });
-  ranges_.balance(n, threads, [&](std::size_t i) { return offset_[i + 1] + 2; });
+  }
   for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
   index_.resize(offset_[n]);
-  parallel_for_ranges(ranges_, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
     std::uint32_t* out = index_.data() + offset_[i];
     for_each_neighbour(i, [&](std::uint32_t j) { *out++ = j; });
-  });
+  }
   position_at_build_ = position;
   n_fluid_at_build_ = n_fluid;
   built_ = true;
@@ -90,7 +82,7 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
 std::size_t NeighbourList::memory_bytes() const {
   return offset_.capacity() * sizeof(std::size_t) + index_.capacity() * sizeof(std::uint32_t) +
          position_at_build_.capacity() * sizeof(Vec2) + grid_.sorted().capacity() * sizeof(std::uint32_t) +
-         grid_.cell_start().capacity() * sizeof(std::uint32_t) + ranges_.memory_bytes();
+         grid_.cell_start().capacity() * sizeof(std::uint32_t);
 }
 
 std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::size_t n_fluid, double cell_size) {

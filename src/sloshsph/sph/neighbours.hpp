@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "sloshsph/core/state_io.hpp"
-#include "sloshsph/core/thread_ranges.hpp"
 #include "sloshsph/core/vec2.hpp"
 
 namespace sloshsph {
@@ -84,7 +83,6 @@ class NeighbourList {
   double search_radius() const { return support_ + skin_; }
   double skin() const { return skin_; }
   std::size_t builds() const { return builds_; }
-  std::size_t n_fluid() const { return n_fluid_at_build_; }  // the fluid rows (the first) of the last build
   const CellGrid& grid() const { return grid_; }
   std::size_t memory_bytes() const;
 
@@ -103,7 +101,6 @@ class NeighbourList {
   std::vector<Vec2> position_at_build_;
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> index_;
-  ThreadRanges ranges_;  // the build's rows split between the threads
 };
 
 // Fluid order that follows the cells of a grid of the given size (for memory locality).

@@ -22,7 +22,6 @@
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
 // stage that used to visit the skin's pairs added exact zeros for them (W = F = 0 for q >= 2),
 // which changes no sum: the results are the same bits.
-#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -30,7 +29,6 @@
 #include <vector>
 
 #include "sloshsph/core/case_spec.hpp"
-#include "sloshsph/core/thread_ranges.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/neighbours.hpp"
@@ -69,13 +67,11 @@ class PairList {
     f_.resize(nl.total_pairs());
     if (n == 0) return;
     const std::uint32_t* index = nl.begin(0);
-    // Split by the rows' Verlet lengths: the walls' rows, after the fluid's, are short.
-    ranges_.balance(n, omp_get_max_threads(),
-                    [&](std::size_t i) { return i < first_row ? 0 : nl.offset(i + 1) - nl.offset(i) + 2; });
-    parallel_for_ranges(ranges_, [&](std::size_t i) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
       if (i < first_row) {
         end_[i] = nl.offset(i);
-        return;
+        continue;
       }
       const Vec2 ri = x[i];
       std::size_t out = nl.offset(i);
@@ -93,10 +89,7 @@ class PairList {
       end_[i] = out;
       if (cubic_) fill_kernel(cubic_spline_, i, out);
       else fill_kernel(wendland_, i, out);
-    });
-    // The stages' loops over the fluid: the free surface's rows, last in the cell order, are short.
-    const std::size_t fluid = first_row == 0 ? std::min(nl.n_fluid(), n) : 0;
-    fluid_rows_.balance(fluid, omp_get_max_threads(), [&](std::size_t i) { return end_[i] - nl.offset(i) + 4; });
+    }
   }
 
   void build(const WendlandC2& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
@@ -112,26 +105,13 @@ class PairList {
     row(i, body);
   }
 
-  // Calls body(i) for the fluid rows i in [0, n_fluid) on all threads, split between them by their
-  // pair counts (evenly where the last build did not list these rows: from a first_row > 0).
-  template <class Body>
-  void parallel_for_fluid(std::size_t n_fluid, Body&& body) const {
-    if (fluid_rows_.rows() == n_fluid) {
-      parallel_for_ranges(fluid_rows_, body);
-      return;
-    }
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n_fluid; ++i) body(i);
-  }
-
   // W(0): a particle's own share of a kernel sum.
   double self_w() const { return self_w_; }
   std::size_t count(std::size_t i) const { return end_[i] - nl_->offset(i); }
   std::size_t rows() const { return end_.size(); }
   std::size_t memory_bytes() const {
     return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t) +
-           (w_.capacity() + f_.capacity()) * sizeof(double) + ranges_.memory_bytes() +
-           fluid_rows_.memory_bytes();
+           (w_.capacity() + f_.capacity()) * sizeof(double);
   }
 
  private:
@@ -169,8 +149,6 @@ class PairList {
   std::vector<std::size_t> end_;  // row i's pairs: slots [nl.offset(i), end_[i])
   std::vector<std::uint32_t> j_;
   std::vector<double> w_, f_;  // W and F of the pair in the same slot
-  ThreadRanges ranges_;        // the build's rows split between the threads
-  ThreadRanges fluid_rows_;    // the fluid rows split between the threads by their pair counts
 };
 
 }  // namespace sloshsph
