@@ -28,7 +28,9 @@
 // each unfinished run and reuses each finished one. A run directory whose case.toml is not the case
 // file's resolved case now (the case changed) fails the test: delete it to start that run again.
 // So the eight runs (about 6.5 h each on one thread of the 2-core machine) can be spread over days,
-// or made with `sloshsph run CASE --checkpoint-every 60 --out DIR` and placed there.
+// or made with `sloshsph run CASE --checkpoint-every 60 --out DIR` and placed there. A level test
+// takes a run it does not find complete there from its committed record, docs/validation/runs/
+// (run_record_dir below), so that the runs of several sessions and machines add up.
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -39,6 +41,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -130,6 +133,12 @@ void wait_while_another_process_runs(const fs::path& dir) {
   }
 }
 
+// Whether `dir` holds a completed run (its summary.json says so).
+bool completed_in(const fs::path& dir) {
+  const nlohmann::json done = read_json(dir / "summary.json");
+  return done.is_object() && done.value("status", "") == "completed";
+}
+
 // Runs the case into `dir`, resumes it from its checkpoint, or finds it complete; returns whether
 // `dir` holds the completed run of exactly this case (the test has failed otherwise). Where two
 // tests start the same run at once, the one that locks the directory first makes it and the other
@@ -143,8 +152,7 @@ bool complete_run(const CaseSpec& spec, const fs::path& dir) {
                     << " (its case.toml differs from the resolved case); delete the directory to run it again";
       return false;
     }
-    const nlohmann::json done = read_json(dir / "summary.json");
-    if (done.is_object() && done.value("status", "") == "completed") return true;
+    if (completed_in(dir)) return true;
     install_stop_handlers();
     RunOptions o;
     o.out_dir = dir.string();
@@ -195,19 +203,64 @@ std::optional<nlohmann::json> completed_run_without_leaks(const CaseSpec& spec, 
 
 void record_admittance_curve(const fs::path& dir, const std::string& tank, int level, const nlohmann::json& admittance);
 
+// The committed record of a run (docs/validation/runs/<stem>/: summary.json, admittance.csv,
+// case.toml, run.json, a few tens of kB; the hour's timeseries.csv is not kept) for a level test
+// on a machine that has not made that run itself: a session of a few hours can make two of the
+// eight runs, and its machine may not outlive it. Taken only when the run directory holds no
+// completed run, when the record's case.toml is the case file's resolved case now, and unless
+// SLOSHSPH_IGNORE_RUN_RECORDS is set (then every run is made here). A record says the git
+// revision that made it; a change of the physics since is the reason to set that variable.
+fs::path run_record_dir(const std::string& stem) {
+  return fs::path(SLOSHSPH_SOURCE_DIR) / "docs" / "validation" / "runs" / stem;
+}
+
+std::optional<fs::path> usable_run_record(const CaseSpec& spec, const std::string& stem) {
+  const char* ignore = std::getenv("SLOSHSPH_IGNORE_RUN_RECORDS");
+  if ((ignore && *ignore) || completed_in(long_run_dir(stem))) return std::nullopt;
+  const fs::path record = run_record_dir(stem);
+  if (!completed_in(record)) return std::nullopt;
+  if (case_settings(read_text(record / "case.toml")) != case_settings(resolved_case_toml(spec))) {
+    std::printf("  %s: a record of another version of the case; the run is made here\n", record.c_str());
+    return std::nullopt;
+  }
+  return record;
+}
+
+// The run of `tank` at `level`: its directory and summary.json, made, resumed or found complete,
+// or its committed record; nothing when the run failed (the test has failed then).
+std::optional<std::pair<fs::path, nlohmann::json>> building_run(const CaseSpec& spec, const std::string& tank,
+                                                                  const std::string& stem) {
+  if (const std::optional<fs::path> record = usable_run_record(spec, stem)) {
+    nlohmann::json summary = read_json(*record / "summary.json");
+    check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(),
+                  0.0, "none may leave");
+    return std::make_pair(*record, std::move(summary));
+  }
+  const fs::path dir = long_run_dir(stem);
+  std::optional<nlohmann::json> completed = completed_run_without_leaks(spec, tank, dir);
+  if (!completed) return std::nullopt;
+  return std::make_pair(dir, std::move(*completed));
+}
+
+// The structure's summary: worked out again from the run's time series where the run directory
+// has it, else summary.json's (the same function wrote it at the end of the run).
+nlohmann::json structure_summary_of(const CaseSpec& spec, const fs::path& dir, const nlohmann::json& summary) {
+  if (!fs::exists(dir / "timeseries.csv")) return summary.at("structure");
+  const CsvTable table = read_csv_table((dir / "timeseries.csv").string());
+  return structure_summary(structure_series(table.names, table.columns), *spec.structure);
+}
+
 std::optional<Measured> run_building(const std::string& tank, int level) {
   const std::string stem = building_stem(tank, level);
   const CaseSpec spec = building_case(stem);
-  const fs::path dir = long_run_dir(stem);
-  const std::optional<nlohmann::json> completed = completed_run_without_leaks(spec, tank, dir);
-  if (!completed) return std::nullopt;
-  const nlohmann::json& summary = *completed;
+  const auto run = building_run(spec, tank, stem);
+  if (!run) return std::nullopt;
+  const auto& [dir, summary] = *run;
   const nlohmann::json meta = read_json(dir / "run.json");
-  std::printf("  %s: git revision %s, %zu resumes, %.0f s of wall time\n", dir.c_str(),
+  std::printf("  %s: git revision %s, %zu resumes, %.0f s of wall time%s\n", dir.c_str(),
               meta.value("git_revision", "?").c_str(), meta.contains("resumed") ? meta["resumed"].size() : 0,
-              summary.value("wall_time_s", NAN));
-  const CsvTable table = read_csv_table((dir / "timeseries.csv").string());
-  const nlohmann::json s = structure_summary(structure_series(table.names, table.columns), *spec.structure);
+              summary.value("wall_time_s", NAN), fs::exists(dir / "timeseries.csv") ? "" : " (committed record)");
+  const nlohmann::json s = structure_summary_of(spec, dir, summary);
   Measured m;
   m.zeta_percent = 100.0 * s.at("admittance").at("effective_damping_ratio").get<double>();
   m.peak_milli_g = s.at("acceleration").at("peak_milli_g").get<double>();
