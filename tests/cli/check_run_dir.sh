@@ -14,5 +14,15 @@ for k in status steps simulated_time_s wall_time_s fluid_particles wall_particle
   grep -q "\"$k\"" "$d/summary.json" || { echo "summary.json lacks $k"; exit 1; }
 done
 grep -q '"status": "completed"' "$d/summary.json" || { echo "status is not completed"; exit 1; }
+# The memory breakdown adds up to the total, and names the largest parts of an ISPH run.
+python3 - "$d/summary.json" <<'PY' || exit 1
+import json, sys
+s = json.load(open(sys.argv[1]))
+parts = s["memory_bytes_per_particle_by_part"]
+total = s["memory_bytes_per_particle"]
+missing = {"particle_arrays", "neighbour_list", "pairs", "ppe_matrix", "multigrid"} - set(parts)
+if missing or abs(sum(parts.values()) - total) > 1e-9 * total or not total > 0:
+    sys.exit(f"memory breakdown {parts} does not add up to {total} (missing {sorted(missing)})")
+PY
 grep -q 'VTKFile type="Collection"' "$d/particles.pvd" || { echo "bad pvd"; exit 1; }
 echo "run directory ok"

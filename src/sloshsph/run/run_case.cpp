@@ -434,7 +434,11 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["omega1_linear_rad_s"] = sim.linear_omega();
   if (spec.excitation.type != ExcitationType::none) s["excitation_omega_rad_s"] = spec.excitation.omega;
   s["neighbour_list_builds"] = sim.scheme().neighbours().builds();
-  s["memory_bytes_per_particle"] = static_cast<double>(sim.scheme().memory_bytes()) / total_particles;
+  const MemoryParts memory = sim.scheme().memory_parts();
+  s["memory_bytes_per_particle"] = static_cast<double>(total_bytes(memory)) / total_particles;
+  nlohmann::json by_part = nlohmann::json::object();
+  for (const MemoryPart& part : memory) by_part[part.name] = static_cast<double>(part.bytes) / total_particles;
+  s["memory_bytes_per_particle_by_part"] = by_part;
   s["peak_resident_memory_bytes"] = peak_resident_bytes();
   nlohmann::json units = nlohmann::json::object();
   for (const Column& c : sim.columns()) units[c.name] = c.unit;

@@ -82,18 +82,29 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
   shifting_.max_shift = spec.scheme.shifting_max * dp_;
 }
 
-std::size_t IsphData::memory_bytes() const {
+MemoryParts IsphData::memory_parts() const {
   const std::size_t n = velocity_old.capacity();
   const std::size_t per = 4 * sizeof(Vec2) + sizeof(double) + 1 + sizeof(SymTensor2);
-  return n * per + extra_acceleration.capacity() * sizeof(Vec2) + ppe_row.capacity() * sizeof(int) +
-         ppe_particle.capacity() * sizeof(std::uint32_t) + ppe_row_capacity.capacity() * sizeof(std::size_t) +
-         ppe_matrix.memory_bytes() + (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
-         krylov.memory_bytes() + multigrid.memory_bytes() + ppe_row_position.capacity() * sizeof(Vec2) +
-         multigrid_rows.capacity() * sizeof(std::uint32_t) + shifting.memory_bytes() +
-         pairs.memory_bytes();
+  const std::size_t particle_arrays = n * per + extra_acceleration.capacity() * sizeof(Vec2);
+  const std::size_t ppe_vectors = ppe_row.capacity() * sizeof(int) + ppe_particle.capacity() * sizeof(std::uint32_t) +
+                                  ppe_row_capacity.capacity() * sizeof(std::size_t) +
+                                  (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
+                                  ppe_row_position.capacity() * sizeof(Vec2) +
+                                  multigrid_rows.capacity() * sizeof(std::uint32_t);
+  return {{"particle_arrays", particle_arrays},
+          {"pairs", pairs.memory_bytes()},
+          {"ppe_matrix", ppe_matrix.memory_bytes()},
+          {"ppe_vectors", ppe_vectors},
+          {"krylov", krylov.memory_bytes()},
+          {"multigrid", multigrid.memory_bytes()},
+          {"shifting", shifting.memory_bytes()}};
 }
 
-std::size_t IsphScheme::memory_bytes() const { return data_.memory_bytes() + neighbours_.memory_bytes(); }
+MemoryParts IsphScheme::memory_parts() const {
+  MemoryParts parts = data_.memory_parts();
+  parts.insert(parts.begin() + 1, {"neighbour_list", neighbours_.memory_bytes()});
+  return parts;
+}
 
 void IsphScheme::update_neighbours(Particles& p) {
   diagnostics_.neighbours_rebuilt = false;

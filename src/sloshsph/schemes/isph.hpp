@@ -52,7 +52,7 @@ struct IsphData {
   PairList pairs;
   ShiftingWork shifting;  // scheme.shifting (physics/shifting.hpp)
   void resize(std::size_t n);
-  std::size_t memory_bytes() const;
+  MemoryParts memory_parts() const;  // without the neighbour list, which the scheme owns
 };
 
 // The stages of IsphScheme::step after the wall velocities, in their order.
@@ -83,7 +83,7 @@ class IsphScheme {
   // (with what decides whether it is kept) between steps.
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
-  std::size_t memory_bytes() const;
+  MemoryParts memory_parts() const;
 
  private:
   void build_pairs(const std::vector<Vec2>& position);

@@ -33,4 +33,18 @@ struct StepDiagnostics {
   std::size_t shifts_limited = 0;    // scheme.shifting: shifts cut by the length cap or a wall
 };
 
+// The memory of a scheme's arrays by part (their capacity, bytes): summary.json's
+// memory_bytes_per_particle and its breakdown memory_bytes_per_particle_by_part.
+struct MemoryPart {
+  const char* name;
+  std::size_t bytes;
+};
+using MemoryParts = std::vector<MemoryPart>;
+
+inline std::size_t total_bytes(const MemoryParts& parts) {
+  std::size_t n = 0;
+  for (const MemoryPart& part : parts) n += part.bytes;
+  return n;
+}
+
 }  // namespace sloshsph

@@ -76,14 +76,18 @@ WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
   shifting_.w_dp = with_kernel(kernel_type_, h, [&](const auto& k) { return k.w(dp_); });
 }
 
-std::size_t WcsphScheme::memory_bytes() const {
+MemoryParts WcsphScheme::memory_parts() const {
   const WcsphData& d = data_;
   const std::size_t n = d.id.capacity();
   const std::size_t per_fluid = sizeof(std::int32_t) + 6 * sizeof(Vec2) + 2 * sizeof(double) + sizeof(Mat2) +
                                 sizeof(SymTensor2);
-  return n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
-         (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) + repulsive_.capacity() +
-         neighbours_.memory_bytes() + d.pairs.memory_bytes() + d.surface.capacity() + d.shifting.memory_bytes();
+  const std::size_t particle_arrays = n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
+                                      (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) +
+                                      repulsive_.capacity() + d.surface.capacity();
+  return {{"particle_arrays", particle_arrays},
+          {"neighbour_list", neighbours_.memory_bytes()},
+          {"pairs", d.pairs.memory_bytes()},
+          {"shifting", d.shifting.memory_bytes()}};
 }
 
 // ---------------------------------------------------------------------------------------

@@ -96,7 +96,7 @@ class WcsphScheme {
   // the driver's gauges.
   double reference_density() const { return rho_ref_; }
   double h() const { return h_; }
-  std::size_t memory_bytes() const;
+  MemoryParts memory_parts() const;
 
  private:
   void build_pairs(const Particles& p, std::size_t first_row = 0);
