@@ -9,7 +9,8 @@
 // the build, and the stages state only their physics.
 //
 // What is kept per pair is the neighbour's index and the kernel's W and F, worked out once in the
-// build; r_ij is worked out from the positions as a stage reads the pair. An ISPH step reads each
+// build, for the pairs within the support only (per block of rows, below); r_ij is worked out from
+// the positions as a stage reads the pair. An ISPH step reads each
 // set of pairs in three to four stages, each of which evaluated the kernel (a square root and its
 // polynomial) before. Measured (docs/performance.md, "The kept multigrid hierarchy and the stored
 // kernel"): on the machine of 2026-12-05 (2 MiB of L2 a core) the stages that read the pairs fell
@@ -22,6 +23,7 @@
 // in the same order as a loop over the Verlet row that skips the pairs beyond the support. A
 // stage that used to visit the skin's pairs added exact zeros for them (W = F = 0 for q >= 2),
 // which changes no sum: the results are the same bits.
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -55,41 +57,16 @@ class PairList {
     const std::size_t n = nl.rows();
     assert(x.size() == n && "one position per row");
     x_ = &x;
-    nl_ = &nl;
     cubic_ = type == KernelType::cubic_spline;
     wendland_ = WendlandC2(h);
     cubic_spline_ = CubicSpline(h);
     self_w_ = cubic_ ? cubic_spline_.w(0.0) : wendland_.w(0.0);
-    const double reach2 = cubic_ ? kernel_reach2(cubic_spline_) : kernel_reach2(wendland_);
+    reach2_ = cubic_ ? kernel_reach2(cubic_spline_) : kernel_reach2(wendland_);
+    begin_.resize(n);
     end_.resize(n);
-    j_.resize(nl.total_pairs());
-    w_.resize(nl.total_pairs());
-    f_.resize(nl.total_pairs());
-    if (n == 0) return;
-    const std::uint32_t* index = nl.begin(0);
+    blocks_.resize((n + kBlockRows - 1) / kBlockRows);
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i < first_row) {
-        end_[i] = nl.offset(i);
-        continue;
-      }
-      const Vec2 ri = x[i];
-      std::size_t out = nl.offset(i);
-      // Without a branch on the cut-off (a third of the Verlet row is skin, in no predictable
-      // order): every candidate is written at `out`, which moves on only for a pair within the
-      // support (out <= s, so a row never overruns its Verlet slots).
-      // r^2 waits in w_ for fill_kernel.
-      for (std::size_t s = nl.offset(i); s < nl.offset(i + 1); ++s) {
-        const std::uint32_t j = index[s];
-        const double r2 = norm2(ri - x[j]);
-        j_[out] = j;
-        w_[out] = r2;
-        out += r2 <= reach2 ? 1 : 0;
-      }
-      end_[i] = out;
-      if (cubic_) fill_kernel(cubic_spline_, i, out);
-      else fill_kernel(wendland_, i, out);
-    }
+    for (std::size_t b = 0; b < blocks_.size(); ++b) build_block(b, nl, first_row);
   }
 
   void build(const WendlandC2& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
@@ -107,22 +84,85 @@ class PairList {
 
   // W(0): a particle's own share of a kernel sum.
   double self_w() const { return self_w_; }
-  std::size_t count(std::size_t i) const { return end_[i] - nl_->offset(i); }
+  std::size_t count(std::size_t i) const { return end_[i] - begin_[i]; }
   std::size_t rows() const { return end_.size(); }
   std::size_t memory_bytes() const {
-    return end_.capacity() * sizeof(std::size_t) + j_.capacity() * sizeof(std::uint32_t) +
-           (w_.capacity() + f_.capacity()) * sizeof(double);
+    std::size_t bytes = (begin_.capacity() + end_.capacity()) * sizeof(std::uint32_t) +
+                        blocks_.capacity() * sizeof(Block);
+    for (const Block& b : blocks_)
+      bytes += b.j.capacity() * sizeof(std::uint32_t) + (b.w.capacity() + b.f.capacity()) * sizeof(double);
+    return bytes;
   }
 
  private:
-  // W and F of row i's kept pairs, slots [nl.offset(i), end), from the r^2 the filter left in w_:
-  // once per build for every stage (a loop without gathers, which the compiler vectorises).
+  // The pairs are kept per block of kBlockRows rows, each block's rows one after the other, so that
+  // only the pairs within the support take memory, not every slot of the Verlet list (a third of
+  // which is skin): a row's count is known only once it is filtered, and a block's arrays grow
+  // when its rows need more room than any build before (docs/performance.md, "Where the memory
+  // goes"). 64 rows: blocks small enough that the static split over two threads stays even on a
+  // tank of 2,000 particles.
+  static constexpr std::size_t kBlockRows = 64;
+  struct Block {
+    std::vector<std::uint32_t> j;  // the neighbour
+    std::vector<double> w, f;      // W and F of the pair in the same slot
+  };
+
+  // Filters block b's rows into its arrays.
+  void build_block(std::size_t b, const NeighbourList& nl, std::size_t first_row) {
+    const std::vector<Vec2>& x = *x_;
+    Block& block = blocks_[b];
+    const std::size_t first = b * kBlockRows, last = std::min(first + kBlockRows, nl.rows());
+    const std::uint32_t* index = nl.begin(0);
+    std::size_t out = 0;
+    for (std::size_t i = first; i < last; ++i) {
+      begin_[i] = static_cast<std::uint32_t>(out);
+      if (i < first_row) {
+        end_[i] = begin_[i];
+        continue;
+      }
+      const std::size_t candidates = nl.count(i);
+      if (block.j.size() < out + candidates) grow(block, out + candidates, out, i - first, last - i - 1);
+      const Vec2 ri = x[i];
+      std::uint32_t* j_out = block.j.data();
+      double* r2_out = block.w.data();
+      // Without a branch on the cut-off (a third of the Verlet row is skin, in no predictable
+      // order): every candidate is written at `out`, which moves on only for a pair within the
+      // support (the block has room for all of the row's candidates).
+      // r^2 waits in w for fill_kernel.
+      for (std::size_t s = nl.offset(i); s < nl.offset(i + 1); ++s) {
+        const std::uint32_t j = index[s];
+        const double r2 = norm2(ri - x[j]);
+        j_out[out] = j;
+        r2_out[out] = r2;
+        out += r2 <= reach2_ ? 1 : 0;
+      }
+      end_[i] = static_cast<std::uint32_t>(out);
+    }
+    if (cubic_) fill_kernel(cubic_spline_, block, 0, out);
+    else fill_kernel(wendland_, block, 0, out);
+  }
+
+  // Room for `needed` slots and for the block's `rows_left` rows at the mean kept count of its
+  // `rows_done` (`kept` pairs), so that the first build of a block grows it about twice and not
+  // to the size of its Verlet rows; and a sixteenth more, so that a later build whose rows hold a
+  // few pairs more than any before does not grow it again at once.
+  static void grow(Block& block, std::size_t needed, std::size_t kept, std::size_t rows_done, std::size_t rows_left) {
+    const std::size_t rest = rows_done > 0 ? kept / rows_done * rows_left : 0;
+    const std::size_t size = needed + rest + (needed + rest) / 16;
+    block.j.resize(size);
+    block.w.resize(size);
+    block.f.resize(size);
+  }
+
+  // W and F of the kept pairs in slots [begin, end) of a block, from the r^2 the filter left in w:
+  // once per build for every stage, the block's rows at once (a loop without gathers, which the
+  // compiler vectorises).
   template <class K>
-  void fill_kernel(const K& kernel, std::size_t i, std::size_t end) {
-    double* w = w_.data();
-    double* f = f_.data();
+  static void fill_kernel(const K& kernel, Block& block, std::size_t begin, std::size_t end) {
+    double* w = block.w.data();
+    double* f = block.f.data();
 #pragma omp simd
-    for (std::size_t s = nl_->offset(i); s < end; ++s) {
+    for (std::size_t s = begin; s < end; ++s) {
       double ws, fs;
       kernel.w_and_gradient(std::sqrt(w[s]), ws, fs);
       w[s] = ws;
@@ -134,21 +174,24 @@ class PairList {
   void row(std::size_t i, Body& body) const {
     const std::vector<Vec2>& x = *x_;
     const Vec2 ri = x[i];
-    for (std::size_t s = nl_->offset(i); s < end_[i]; ++s) {
-      const std::uint32_t j = j_[s];
-      body(Pair{j, ri - x[j], w_[s], f_[s]});
-    }
+    const Block& block = blocks_[i / kBlockRows];
+    const std::uint32_t* j = block.j.data();
+    const double* w = block.w.data();
+    const double* f = block.f.data();
+    // The bounds in locals: a body that writes 32-bit integers (the PPE's column indices) could
+    // otherwise alias end_ and make the compiler load it again at every pair.
+    const std::size_t begin = begin_[i], end = end_[i];
+    for (std::size_t s = begin; s < end; ++s) body(Pair{j[s], ri - x[j[s]], w[s], f[s]});
   }
 
   const std::vector<Vec2>* x_ = nullptr;
-  const NeighbourList* nl_ = nullptr;
   bool cubic_ = false;
   WendlandC2 wendland_{1.0};
   CubicSpline cubic_spline_{1.0};
   double self_w_ = 0.0;
-  std::vector<std::size_t> end_;  // row i's pairs: slots [nl.offset(i), end_[i])
-  std::vector<std::uint32_t> j_;
-  std::vector<double> w_, f_;  // W and F of the pair in the same slot
+  double reach2_ = 0.0;
+  std::vector<std::uint32_t> begin_, end_;  // row i's pairs: slots [begin_[i], end_[i]) of its block
+  std::vector<Block> blocks_;
 };
 
 }  // namespace sloshsph
