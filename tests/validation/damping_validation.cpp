@@ -147,12 +147,14 @@ TEST(Validation, MidpointPredictorRemovesTheStepDamping) {
   testing::report("predictor_zeta_midpoint_4ms", midpoint_4ms);
   testing::report("predictor_zeta_midpoint_2ms", midpoint_2ms);
   testing::check(Check{.quantity = "free-decay damping of the Euler predictor less the midpoint's, dt = 4 ms",
+                       .unit = "",  // fractions of critical damping
                        .measured = euler_4ms - midpoint_4ms,
                        .kind = Tolerance::relative,
                        .reference = omega1 * 0.004 / 4.0,
                        .tolerance = 0.25,
                        .source = "w1 dt / 4 of the Euler predictor with the trapezoidal update (docs/physics.md); 25%"});
   testing::check(Check{.quantity = "free-decay damping of the midpoint predictor, dt = 4 ms against 2 ms",
+                       .unit = "",  // fractions of critical damping
                        .measured = midpoint_4ms,
                        .kind = Tolerance::absolute,
                        .reference = midpoint_2ms,

@@ -24,12 +24,20 @@ CaseSpec tank_with(const std::string& shape, PressureProbeSpec probe) {
   return spec;
 }
 
+// A point probe named "p" at `position` (m); a test adds `face_end` or `size` where it needs them.
+PressureProbeSpec probe_at(Vec2 position) {
+  PressureProbeSpec probe;
+  probe.name = "p";
+  probe.position = position;
+  return probe;
+}
+
 PressureSensor sensor_of(const std::string& shape, PressureProbeSpec probe) {
   return build_scene(tank_with(shape, probe)).pressure_sensors.at(0);
 }
 
 TEST(PressureSensors, PointProbeIsUnchanged) {
-  const PressureSensor s = sensor_of("rectangle", {"p", {0.5, 0.1}});
+  const PressureSensor s = sensor_of("rectangle", probe_at({0.5, 0.1}));
   EXPECT_FALSE(s.face);
   EXPECT_DOUBLE_EQ(s.from.x, 0.5);
   EXPECT_DOUBLE_EQ(s.from.y, 0.1);
@@ -38,7 +46,7 @@ TEST(PressureSensors, PointProbeIsUnchanged) {
 }
 
 TEST(PressureSensors, ToGivesTheFaceAsWritten) {
-  PressureProbeSpec probe{"p", {0.5, 0.05}};
+  PressureProbeSpec probe = probe_at({0.5, 0.05});
   probe.face_end = Vec2{0.5, 0.15};
   const PressureSensor s = sensor_of("rectangle", probe);
   EXPECT_TRUE(s.face);
@@ -47,7 +55,7 @@ TEST(PressureSensors, ToGivesTheFaceAsWritten) {
 
 // On the right wall of a rectangle the face is vertical, centred on the probe.
 TEST(PressureSensors, SizeOnAVerticalWallIsVerticalAndCentred) {
-  PressureProbeSpec probe{"p", {0.5, 0.16}};
+  PressureProbeSpec probe = probe_at({0.5, 0.16});
   probe.size = 0.009;
   const PressureSensor s = sensor_of("rectangle", probe);
   EXPECT_TRUE(s.face);
@@ -59,7 +67,7 @@ TEST(PressureSensors, SizeOnAVerticalWallIsVerticalAndCentred) {
 
 // On the floor the face is horizontal; a probe dp/2 in front of the wall keeps that offset.
 TEST(PressureSensors, SizeOnTheFloorIsHorizontalThroughTheProbe) {
-  PressureProbeSpec probe{"p", {0.25, 0.01}};
+  PressureProbeSpec probe = probe_at({0.25, 0.01});
   probe.size = 0.04;
   const PressureSensor s = sensor_of("rectangle", probe);
   EXPECT_NEAR(s.from.y, 0.01, 1e-12);
@@ -71,7 +79,7 @@ TEST(PressureSensors, SizeOnTheFloorIsHorizontalThroughTheProbe) {
 // On a 45-degree slope the face follows the slope.
 TEST(PressureSensors, SizeOnASlopeFollowsIt) {
   // A V-shaped section (sloped, no flat part): the left slope runs from (0, 0.25) to (0.25, 0).
-  PressureProbeSpec probe{"p", {0.1, 0.15}};
+  PressureProbeSpec probe = probe_at({0.1, 0.15});
   probe.size = 0.02;
   const PressureSensor s = sensor_of("triangle", probe);
   const Vec2 d = s.to - s.from;
@@ -81,7 +89,7 @@ TEST(PressureSensors, SizeOnASlopeFollowsIt) {
 }
 
 TEST(PressureSensors, SizeAwayFromAWallIsRefused) {
-  PressureProbeSpec probe{"p", {0.25, 0.1}};
+  PressureProbeSpec probe = probe_at({0.25, 0.1});
   probe.size = 0.01;
   try {
     build_scene(tank_with("rectangle", probe));
@@ -92,7 +100,7 @@ TEST(PressureSensors, SizeAwayFromAWallIsRefused) {
 }
 
 TEST(PressureSensors, SizeRunningPastTheCornerIsRefused) {
-  PressureProbeSpec probe{"p", {0.5, 0.02}};
+  PressureProbeSpec probe = probe_at({0.5, 0.02});
   probe.size = 0.2;  // from y = -0.08: beyond the floor
   try {
     build_scene(tank_with("rectangle", probe));
