@@ -122,6 +122,11 @@ std::string case_settings(const std::string& resolved) {
   return body == std::string::npos ? resolved : resolved.substr(body);
 }
 
+// Whether the case.toml in `dir` (a run directory or a committed record) is `spec` resolved now.
+bool holds_case(const fs::path& dir, const CaseSpec& spec) {
+  return case_settings(read_text(dir / "case.toml")) == case_settings(resolved_case_toml(spec));
+}
+
 // Waits while another process holds the run directory's lock: a BuildingRun test beside this one
 // (ctest -j), or a run made by hand.
 void wait_while_another_process_runs(const fs::path& dir) {
@@ -146,8 +151,7 @@ bool completed_in(const fs::path& dir) {
 bool complete_run(const CaseSpec& spec, const fs::path& dir) {
   for (int attempt = 1;; ++attempt) {
     wait_while_another_process_runs(dir);
-    if (fs::exists(dir / "case.toml") &&
-        case_settings(read_text(dir / "case.toml")) != case_settings(resolved_case_toml(spec))) {
+    if (fs::exists(dir / "case.toml") && !holds_case(dir, spec)) {
       ADD_FAILURE() << dir << " holds a run of another version of " << spec.source
                     << " (its case.toml differs from the resolved case); delete the directory to run it again";
       return false;
@@ -190,14 +194,19 @@ CaseSpec building_case(const std::string& stem) {
   return resolve_case(read_case_file(testing::case_path(stem + ".toml"), {}));
 }
 
+// The bar for every run: no particle left the tank.
+void check_no_leaks(const nlohmann::json& summary, const std::string& tank) {
+  check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(), 0.0,
+                "none may leave");
+}
+
 // Makes, resumes or finds the completed run of `spec` (the case of `tank`) in `dir` and checks that
 // no particle left the tank; returns its summary.json, or nothing when the run failed.
 std::optional<nlohmann::json> completed_run_without_leaks(const CaseSpec& spec, const std::string& tank,
                                                           const fs::path& dir) {
   if (!complete_run(spec, dir)) return std::nullopt;
   nlohmann::json summary = read_json(dir / "summary.json");
-  check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(), 0.0,
-                "none may leave");
+  check_no_leaks(summary, tank);
   return summary;
 }
 
@@ -219,7 +228,7 @@ std::optional<fs::path> usable_run_record(const CaseSpec& spec, const std::strin
   if ((ignore && *ignore) || completed_in(long_run_dir(stem))) return std::nullopt;
   const fs::path record = run_record_dir(stem);
   if (!completed_in(record)) return std::nullopt;
-  if (case_settings(read_text(record / "case.toml")) != case_settings(resolved_case_toml(spec))) {
+  if (!holds_case(record, spec)) {
     std::printf("  %s: a record of another version of the case; the run is made here\n", record.c_str());
     return std::nullopt;
   }
@@ -232,8 +241,7 @@ std::optional<std::pair<fs::path, nlohmann::json>> building_run(const CaseSpec& 
                                                                   const std::string& stem) {
   if (const std::optional<fs::path> record = usable_run_record(spec, stem)) {
     nlohmann::json summary = read_json(*record / "summary.json");
-    check_at_most("particles leaked from the tank in one hour, " + tank, summary.at("leaked_particles").get<double>(),
-                  0.0, "none may leave");
+    check_no_leaks(summary, tank);
     return std::make_pair(*record, std::move(summary));
   }
   const fs::path dir = long_run_dir(stem);
@@ -242,10 +250,11 @@ std::optional<std::pair<fs::path, nlohmann::json>> building_run(const CaseSpec& 
   return std::make_pair(dir, std::move(*completed));
 }
 
-// The structure's summary: worked out again from the run's time series where the run directory
-// has it, else summary.json's (the same function wrote it at the end of the run).
-nlohmann::json structure_summary_of(const CaseSpec& spec, const fs::path& dir, const nlohmann::json& summary) {
-  if (!fs::exists(dir / "timeseries.csv")) return summary.at("structure");
+// The structure's summary: worked out again from the run's time series, or for a committed record
+// (which has none) summary.json's (the same function wrote it at the end of the run).
+nlohmann::json structure_summary_of(const CaseSpec& spec, const fs::path& dir, const nlohmann::json& summary,
+                                    bool record) {
+  if (record) return summary.at("structure");
   const CsvTable table = read_csv_table((dir / "timeseries.csv").string());
   return structure_summary(structure_series(table.names, table.columns), *spec.structure);
 }
@@ -256,11 +265,12 @@ std::optional<Measured> run_building(const std::string& tank, int level) {
   const auto run = building_run(spec, tank, stem);
   if (!run) return std::nullopt;
   const auto& [dir, summary] = *run;
+  const bool record = !fs::exists(dir / "timeseries.csv");
   const nlohmann::json meta = read_json(dir / "run.json");
   std::printf("  %s: git revision %s, %zu resumes, %.0f s of wall time%s\n", dir.c_str(),
               meta.value("git_revision", "?").c_str(), meta.contains("resumed") ? meta["resumed"].size() : 0,
-              summary.value("wall_time_s", NAN), fs::exists(dir / "timeseries.csv") ? "" : " (committed record)");
-  const nlohmann::json s = structure_summary_of(spec, dir, summary);
+              summary.value("wall_time_s", NAN), record ? " (committed record)" : "");
+  const nlohmann::json s = structure_summary_of(spec, dir, summary, record);
   Measured m;
   m.zeta_percent = 100.0 * s.at("admittance").at("effective_damping_ratio").get<double>();
   m.peak_milli_g = s.at("acceleration").at("peak_milli_g").get<double>();

@@ -102,7 +102,7 @@ MemoryParts IsphData::memory_parts() const {
 
 MemoryParts IsphScheme::memory_parts() const {
   MemoryParts parts = data_.memory_parts();
-  parts.insert(parts.begin() + 1, {"neighbour_list", neighbours_.memory_bytes()});
+  parts.push_back({"neighbour_list", neighbours_.memory_bytes()});
   return parts;
 }
 

@@ -31,7 +31,6 @@ class AnyScheme {
   MemoryParts memory_parts() const {
     return std::visit([](const auto& s) { return s.memory_parts(); }, scheme_);
   }
-  std::size_t memory_bytes() const { return total_bytes(memory_parts()); }
   // The largest stable step of an explicit scheme (WCSPH: the CFL condition), none for ISPH.
   std::optional<double> stable_dt(const Particles& p, const FrameForce& f) const {
     if (const auto* w = std::get_if<WcsphScheme>(&scheme_)) return w->stable_dt(p, f);

@@ -138,8 +138,8 @@ class PairList {
       }
       end_[i] = static_cast<std::uint32_t>(out);
     }
-    if (cubic_) fill_kernel(cubic_spline_, block, 0, out);
-    else fill_kernel(wendland_, block, 0, out);
+    if (cubic_) fill_kernel(cubic_spline_, block, out);
+    else fill_kernel(wendland_, block, out);
   }
 
   // Room for `needed` slots and for the block's `rows_left` rows at the mean kept count of its
@@ -154,15 +154,15 @@ class PairList {
     block.f.resize(size);
   }
 
-  // W and F of the kept pairs in slots [begin, end) of a block, from the r^2 the filter left in w:
-  // once per build for every stage, the block's rows at once (a loop without gathers, which the
+  // W and F of a block's first `count` slots (its rows' kept pairs), from the r^2 the filter left in
+  // w: once per build for every stage, the block's rows at once (a loop without gathers, which the
   // compiler vectorises).
   template <class K>
-  static void fill_kernel(const K& kernel, Block& block, std::size_t begin, std::size_t end) {
+  static void fill_kernel(const K& kernel, Block& block, std::size_t count) {
     double* w = block.w.data();
     double* f = block.f.data();
 #pragma omp simd
-    for (std::size_t s = begin; s < end; ++s) {
+    for (std::size_t s = 0; s < count; ++s) {
       double ws, fs;
       kernel.w_and_gradient(std::sqrt(w[s]), ws, fs);
       w[s] = ws;
