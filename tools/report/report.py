@@ -33,13 +33,15 @@ DESCRIPTIONS = {
     "max_speed": "largest fluid speed", "dt": "time step", "ppe_iterations": "pressure-solve iterations",
     "leaked": "leaked particles", "fluid_mass": "fluid mass in the tank",
     "wall_contacts": "wall-contact corrections (cumulative)",
+    "pair_contacts": "pair-contact corrections (cumulative)", "closest_pair": "closest two fluid particles (/ dp)",
     "x_s": "structure displacement", "v_s": "structure velocity", "a_s": "structure acceleration",
     "F_TLD": "TLD force on the structure",
 }
 BASE = ["x_base", "v_base", "a_base"]
 FORCES = ["F_w", "F_sw", "F_wy"]
 ENERGY = ["E_kin", "E_pot", "W_base"]
-DIAGNOSTICS = ["max_speed", "dt", "ppe_iterations", "leaked", "wall_contacts", "fluid_mass"]
+DIAGNOSTICS = ["max_speed", "dt", "ppe_iterations", "leaked", "wall_contacts", "pair_contacts", "closest_pair",
+               "fluid_mass"]
 STRUCTURE = ["x_s", "v_s", "a_s", "F_TLD"]
 MAX_PANELS = 10  # per figure; more columns are split over several figures
 

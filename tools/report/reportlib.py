@@ -226,7 +226,8 @@ class Run:
 _DEFAULT_UNITS = {
     "time": "s", "x_base": "m", "v_base": "m/s", "a_base": "m/s^2", "F_w": "N/m", "F_sw": "N/m",
     "F_wy": "N/m", "W_base": "J/m", "fluid_mass": "kg/m", "E_kin": "J/m", "E_pot": "J/m",
-    "leaked": "1", "max_speed": "m/s", "dt": "s", "ppe_iterations": "1", "wall_contacts": "1", "x_s": "m", "v_s": "m/s",
+    "leaked": "1", "max_speed": "m/s", "dt": "s", "ppe_iterations": "1", "wall_contacts": "1", "pair_contacts": "1",
+    "closest_pair": "dp", "x_s": "m", "v_s": "m/s",
     "a_s": "m/s^2", "F_TLD": "N/m",
 }
 

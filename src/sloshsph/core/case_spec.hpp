@@ -149,6 +149,8 @@ struct SchemeSpec {
   double shifting_max = 0.2;             // the longest shift of a step, a fraction of dp
   // Both schemes: stop fluid particles at the tank walls (physics/wall_contact.hpp).
   bool wall_contact = true;
+  // Both schemes: keep two fluid particles from reaching one point (physics/pair_contact.hpp).
+  bool pair_contact = true;
   WcsphSpec wcsph;                       // used when type = "wcsph"
 };
 

@@ -64,6 +64,14 @@ void StateReader::take(void* out, std::size_t n, const std::string& name) {
   position_ += n;
 }
 
+bool StateReader::next_is(const std::string& name) const {
+  std::uint32_t length = 0;
+  if (position_ + sizeof length > bytes_.size()) return false;
+  std::memcpy(&length, bytes_.data() + position_, sizeof length);
+  return length == name.size() && position_ + sizeof length + length <= bytes_.size() &&
+         bytes_.compare(position_ + sizeof length, length, name) == 0;
+}
+
 std::string StateReader::text(const std::string& name) {
   const std::size_t count = expect(name, 1);
   std::string s(count, '\0');

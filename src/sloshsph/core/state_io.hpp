@@ -55,6 +55,9 @@ class StateReader {
     return v;
   }
   std::string text(const std::string& name);
+  // Whether the next record is `name` (for a record that later versions added: an older
+  // checkpoint without it stays readable).
+  bool next_is(const std::string& name) const;
   bool at_end() const { return position_ == bytes_.size(); }
 
  private:

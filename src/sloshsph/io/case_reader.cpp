@@ -168,6 +168,7 @@ SchemeSpec read_scheme(TableReader& r) {
   else read_wcsph_keys(r, s);
   s.neighbour_skin = r.in_range("neighbour_skin", s.neighbour_skin, 0.0, 1.0);
   s.wall_contact = r.boolean("wall_contact", s.wall_contact);
+  s.pair_contact = r.boolean("pair_contact", s.pair_contact);
   s.shifting_max = r.in_range("shifting_max", s.shifting_max, 0.01, 0.5);  // both schemes' shifts
   r.finish();
   return s;
@@ -805,6 +806,7 @@ static toml::table scheme_table(const SchemeSpec& x) {
   toml::table t{{"type", x.type},
                 {"neighbour_skin", x.neighbour_skin},
                 {"wall_contact", x.wall_contact},
+                {"pair_contact", x.pair_contact},
                 {"shifting_max", x.shifting_max}};
   if (x.type == "isph") {
     if (x.density_relaxation_time > 0.0) t.insert("density_relaxation_time", x.density_relaxation_time);

@@ -415,6 +415,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["wall_particles"] = p.n_wall();
   s["leaked_particles"] = sim.leaked();
   s["wall_contacts"] = sim.wall_contacts();
+  s["pair_contacts"] = sim.pair_contacts();
   if (sim.spec().scheme.shifting != ShiftingModel::none) s["shifts_limited"] = sim.shifts_limited();
   s["pressure_pinned"] = {{"steps", sim.pinned_steps()},
                           {"particles", sim.pinned_particles()},

@@ -10,7 +10,9 @@
 #include "sloshsph/linear/closed_form.hpp"
 #include "sloshsph/linear/modal.hpp"
 #include "sloshsph/linear/rectangular.hpp"
+#include "sloshsph/observe/particle_spacing.hpp"
 #include "sloshsph/observe/probes.hpp"
+#include "sloshsph/physics/pair_contact.hpp"
 #include "sloshsph/physics/wall_contact.hpp"
 #include "sloshsph/run/run_case.hpp"
 #include "sloshsph/sph/kernel.hpp"
@@ -161,6 +163,11 @@ void Simulation::build_columns() {
   add_column("dt", "s", [](S s, B) { return s.last_dt_; });
   add_column("ppe_iterations", "1", [](S s, B) { return static_cast<double>(s.scheme_.diagnostics().solver_iterations); });
   add_column("wall_contacts", "1", [](S s, B) { return static_cast<double>(s.wall_contacts_); });
+  add_column("pair_contacts", "1", [](S s, B) { return static_cast<double>(s.pair_contacts_); });
+  add_column("closest_pair", "dp", [](S s, B) {
+    const double dp = s.spec_.particles.dp;
+    return closest_fluid_pair(s.scene_.particles, dp) / dp;
+  });
   if (spec_.scheme.shifting != ShiftingModel::none)
     add_column("shifts_limited", "1", [](S s, B) { return static_cast<double>(s.shifts_limited_); });
   for (std::size_t k = 0; k < plates_.size(); ++k) {
@@ -307,6 +314,8 @@ void Simulation::step() {
   }
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
   Vec2 wall_force = scheme_.diagnostics().wall_force;
+  if (spec_.scheme.pair_contact)  // before the wall contact, which then has the last word at the walls
+    pair_contacts_ += keep_fluid_pairs_apart(scene_.particles, scheme_.neighbours(), spec_.particles.dp, pair_contact_rows_);
   if (spec_.scheme.wall_contact) {
     const WallContact contact =
         keep_fluid_in_tank(scene_.particles, container_, *scene_.tank, spec_.particles.dp, container_grid(), dt);
@@ -503,6 +512,7 @@ void Simulation::save_state(StateWriter& w) const {
   w.array("sim.gauge_datum", gauge_datum_);
   w.array("sim.leaks", leaks_);
   w.value("sim.wall_contacts", static_cast<std::uint64_t>(wall_contacts_));
+  w.value("sim.pair_contacts", static_cast<std::uint64_t>(pair_contacts_));
   if (spec_.scheme.shifting != ShiftingModel::none)
     w.value("sim.shifts_limited", static_cast<std::uint64_t>(shifts_limited_));
   w.value("sim.acc_dt", acc_dt_);
@@ -530,6 +540,8 @@ void Simulation::load_state(StateReader& r) {
   gauge_datum_ = r.array<double>("sim.gauge_datum");
   leaks_ = r.array<LeakRecord>("sim.leaks");
   wall_contacts_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.wall_contacts"));
+  if (r.next_is("sim.pair_contacts"))  // a checkpoint from before the pair contact has none
+    pair_contacts_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.pair_contacts"));
   if (spec_.scheme.shifting != ShiftingModel::none)
     shifts_limited_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.shifts_limited"));
   acc_dt_ = r.value<double>("sim.acc_dt");

@@ -1,6 +1,7 @@
 #pragma once
 // One simulation in memory: scene, scheme, excitation and observers, advanced step by
 // step. The command line (run_case) and the tests drive it the same way.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -98,6 +99,8 @@ class Simulation {
   std::size_t leaked() const { return leaks_.size(); }
   // Fluid particles stopped at the tank walls since t = 0 (scheme.wall_contact).
   std::size_t wall_contacts() const { return wall_contacts_; }
+  // Pairs of fluid particles kept apart since t = 0 (scheme.pair_contact).
+  std::size_t pair_contacts() const { return pair_contacts_; }
   std::size_t shifts_limited() const { return shifts_limited_; }
   // Implicit PPE: steps in which a block of fluid that no p = 0 condition reaches was set to p = 0
   // (IsphScheme::pin_unanchored_blocks), and its particles summed over those steps; counted since
@@ -154,6 +157,8 @@ class Simulation {
   std::vector<double> gauge_datum_;      // surface height of each gauge at t = 0
   std::vector<LeakRecord> leaks_;
   std::size_t wall_contacts_ = 0;
+  std::size_t pair_contacts_ = 0;
+  std::vector<std::uint8_t> pair_contact_rows_;  // scratch of the pair-contact step
   std::size_t shifts_limited_ = 0;  // scheme.shifting: shifts cut by their cap or a wall, over the run
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;

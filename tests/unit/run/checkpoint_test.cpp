@@ -2,6 +2,8 @@
 // exactly as the original: bitwise equal particles after the same number of steps.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/io/case_reader.hpp"
@@ -55,6 +57,23 @@ TEST(Checkpoint, WcsphResumesBitwise) {
 TEST(Checkpoint, ShiftingResumesBitwise) {
   expect_bitwise_resume(small_case({"scheme.shifting=lind"}));
   expect_bitwise_resume(small_case({"scheme={type=\"wcsph\", shifting=\"delta_plus\"}"}));
+}
+
+// A record that a later version added is read only if it is there (StateReader::next_is), so that
+// a checkpoint written before it (before sim.pair_contacts, 2026-12-06) still resumes.
+TEST(Checkpoint, RecordAddedLaterIsOptional) {
+  StateWriter old_version;
+  old_version.value("sim.wall_contacts", std::uint64_t{3});
+  old_version.value("sim.acc_dt", 0.5);
+  StateReader r(old_version.bytes(), "old.bin");
+  EXPECT_TRUE(r.next_is("sim.wall_contacts"));
+  EXPECT_EQ(r.value<std::uint64_t>("sim.wall_contacts"), 3u);
+  EXPECT_FALSE(r.next_is("sim.pair_contacts"));
+  EXPECT_FALSE(r.next_is("sim.acc"));  // a prefix of the next record's name is not it
+  EXPECT_TRUE(r.next_is("sim.acc_dt"));
+  EXPECT_EQ(r.value<double>("sim.acc_dt"), 0.5);
+  EXPECT_FALSE(r.next_is("sim.acc_dt"));  // at the end
+  EXPECT_TRUE(r.at_end());
 }
 
 // A damaged checkpoint is an InputError naming the record, never garbage.
