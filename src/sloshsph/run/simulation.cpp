@@ -12,7 +12,6 @@
 #include "sloshsph/linear/rectangular.hpp"
 #include "sloshsph/observe/particle_spacing.hpp"
 #include "sloshsph/observe/probes.hpp"
-#include "sloshsph/physics/pair_contact.hpp"
 #include "sloshsph/physics/wall_contact.hpp"
 #include "sloshsph/run/run_case.hpp"
 #include "sloshsph/sph/kernel.hpp"
@@ -68,6 +67,7 @@ Simulation::Simulation(const CaseSpec& spec, SimulationStart start) try
   screen_loads_.assign(screens_.elements.size(), ScreenElementLoad{});
   linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
+  pair_contact_ = PairContactStep(spec_.particles.dp);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   start_plates();
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
@@ -315,7 +315,7 @@ void Simulation::step() {
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
   Vec2 wall_force = scheme_.diagnostics().wall_force;
   if (spec_.scheme.pair_contact)  // before the wall contact, which then has the last word at the walls
-    pair_contacts_ += keep_fluid_pairs_apart(scene_.particles, scheme_.neighbours(), spec_.particles.dp, pair_contact_rows_);
+    pair_contacts_ += pair_contact_.apply(scene_.particles, scheme_.neighbours());
   if (spec_.scheme.wall_contact) {
     const WallContact contact =
         keep_fluid_in_tank(scene_.particles, container_, *scene_.tank, spec_.particles.dp, container_grid(), dt);

@@ -13,6 +13,7 @@
 #include "sloshsph/geometry/scene.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/excitation.hpp"
+#include "sloshsph/physics/pair_contact.hpp"
 #include "sloshsph/physics/porous.hpp"
 #include "sloshsph/run/plate_coupling.hpp"
 #include "sloshsph/run/structure_coupling.hpp"
@@ -158,7 +159,7 @@ class Simulation {
   std::vector<LeakRecord> leaks_;
   std::size_t wall_contacts_ = 0;
   std::size_t pair_contacts_ = 0;
-  std::vector<std::uint8_t> pair_contact_rows_;  // scratch of the pair-contact step
+  PairContactStep pair_contact_{0.0};  // scheme.pair_contact (set to the case's dp in the constructor)
   std::size_t shifts_limited_ = 0;  // scheme.shifting: shifts cut by their cap or a wall, over the run
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;

@@ -32,10 +32,8 @@ struct Cloud {
     for (std::size_t k = 0; k < walls.size(); ++k) p.position[x.size() + k] = walls[k];
     list.build(p.position, p.n_fluid);
   }
-  std::size_t contact() {
-    std::vector<std::uint8_t> scratch;
-    return keep_fluid_pairs_apart(p, list, kDp, scratch);
-  }
+  PairContactStep step{kDp};
+  std::size_t contact() { return step.apply(p, list); }
   Vec2 momentum() const {
     Vec2 m;
     for (std::size_t i = 0; i < p.n_fluid; ++i) m += p.velocity[i] * p.mass;
@@ -121,6 +119,28 @@ TEST(PairContact, ThreeInALineAreCorrectedInTheFluidOrderRepeatably) {
   Cloud again({{0.0, 0.0}, {0.05 * kDp, 0.0}, {0.1 * kDp, 0.0}}, {{0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
   EXPECT_EQ(again.contact(), n);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(again.p.position[i].x, c.p.position[i].x);
+}
+
+// The candidates are kept between steps: a pair that was far apart when they were collected is
+// found once its particles have moved far enough for the candidates to be collected again.
+TEST(PairContactStep, PairThatWasFarIsFoundAfterTheParticlesMoved) {
+  Cloud c({{0.0, 0.0}, {0.9 * kDp, 0.0}}, {{0.1, 0.0}, {-0.1, 0.0}});
+  EXPECT_EQ(c.contact(), 0u);  // 0.9 dp: not even a candidate
+  c.p.position[0].x += 0.35 * kDp;  // 0.2 dp apart now, each moved more than (3/4 - 1/4) dp / 2
+  c.p.position[1].x -= 0.35 * kDp;
+  EXPECT_EQ(c.contact(), 1u);
+  EXPECT_NEAR(c.p.velocity[0].x, 0.0, 1e-15);
+  EXPECT_NEAR(c.p.velocity[1].x, 0.0, 1e-15);
+}
+
+TEST(PairContactStep, CandidateWithinReachIsFollowedWithoutCollectingAgain) {
+  // 0.7 dp apart (a candidate); moved 0.24 dp each towards the other (not enough to collect
+  // again): 0.22 dp apart and approaching, so corrected from the kept candidates.
+  Cloud c({{0.0, 0.0}, {0.7 * kDp, 0.0}}, {{0.1, 0.0}, {-0.1, 0.0}});
+  EXPECT_EQ(c.contact(), 0u);
+  c.p.position[0].x += 0.24 * kDp;
+  c.p.position[1].x -= 0.24 * kDp;
+  EXPECT_EQ(c.contact(), 1u);
 }
 
 // Many close pairs at once (a jittered lattice squeezed to 0.2 dp): the result on 2 threads is the
