@@ -435,7 +435,8 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["omega1_linear_rad_s"] = sim.linear_omega();
   if (spec.excitation.type != ExcitationType::none) s["excitation_omega_rad_s"] = spec.excitation.omega;
   s["neighbour_list_builds"] = sim.scheme().neighbours().builds();
-  const MemoryParts memory = sim.scheme().memory_parts();
+  MemoryParts memory = sim.scheme().memory_parts();
+  memory.push_back({"pair_contact", sim.pair_contact_memory_bytes()});
   s["memory_bytes_per_particle"] = static_cast<double>(total_bytes(memory)) / total_particles;
   nlohmann::json by_part = nlohmann::json::object();
   for (const MemoryPart& part : memory) by_part[part.name] = static_cast<double>(part.bytes) / total_particles;

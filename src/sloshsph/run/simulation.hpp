@@ -102,6 +102,7 @@ class Simulation {
   std::size_t wall_contacts() const { return wall_contacts_; }
   // Pairs of fluid particles kept apart since t = 0 (scheme.pair_contact).
   std::size_t pair_contacts() const { return pair_contacts_; }
+  std::size_t pair_contact_memory_bytes() const { return pair_contact_.memory_bytes(); }
   std::size_t shifts_limited() const { return shifts_limited_; }
   // Implicit PPE: steps in which a block of fluid that no p = 0 condition reaches was set to p = 0
   // (IsphScheme::pin_unanchored_blocks), and its particles summed over those steps; counted since
