@@ -9,7 +9,7 @@
 // in cases/faltinsen2000_wcsph.toml, Shao's repulsive walls hold particles about dp/3 from the end
 // walls, pairs closer than dp/2 stand along both end walls from the first seconds, and at 9.5 s
 // two particles 7 mm from the right wall, 0.24 m up, were at one point (float32 snapshots: 0; the
-// column 1.8e-10 dp at 9.61 s); they moved together, 6e-5 dp apart, for seconds after. Such a pair
+// column 1.8e-10 dp at 9.61 s); half a second later they were still 6e-5 dp apart. Such a pair
 // carries two particles' mass at one point, which is a density error the kernel sums cannot see,
 // and two equal particles at one point once made the artificial viscosity divide 0 by 0
 // (85fbac0).
