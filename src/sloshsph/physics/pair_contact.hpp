@@ -104,12 +104,7 @@ class PairContactStep {
  private:
   bool stale(const Particles& p, const NeighbourList& list) const {
     if (list.builds() != list_builds_ || p.n_fluid != position_at_collect_.size()) return true;
-    const double limit2 = 0.25 * (reach_ - contact_) * (reach_ - contact_);
-    bool moved = false;
-#pragma omp parallel for schedule(static) reduction(|| : moved)
-    for (std::size_t i = 0; i < p.n_fluid; ++i)
-      if (!(norm2(p.position[i] - position_at_collect_[i]) <= limit2)) moved = true;  // NaN too
-    return moved;
+    return moved_more_than(p.position, position_at_collect_, p.n_fluid, 0.5 * (reach_ - contact_));
   }
 
   // The pairs (i < j, both fluid) closer than reach_, counted per row and then written in row

@@ -62,12 +62,12 @@ Simulation::Simulation(const CaseSpec& spec, SimulationStart start) try
       container_(*scene_.tank, container_grid(), (spec.particles.wall_layers + 2) * spec.particles.dp),
       base_(spec.excitation, spec.time.end),
       scheme_(spec, scene_.h),
-      screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)) {
+      screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)),
+      pair_contact_(spec.particles.dp) {
   acc_screen_force_.assign(screens_.elements.size(), Vec2{});
   screen_loads_.assign(screens_.elements.size(), ScreenElementLoad{});
   linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
-  pair_contact_ = PairContactStep(spec_.particles.dp);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   start_plates();
   scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));

@@ -160,7 +160,7 @@ class Simulation {
   std::vector<LeakRecord> leaks_;
   std::size_t wall_contacts_ = 0;
   std::size_t pair_contacts_ = 0;
-  PairContactStep pair_contact_{0.0};  // scheme.pair_contact (set to the case's dp in the constructor)
+  PairContactStep pair_contact_;  // scheme.pair_contact
   std::size_t shifts_limited_ = 0;  // scheme.shifting: shifts cut by their cap or a wall, over the run
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;

@@ -33,14 +33,18 @@ void CellGrid::build(const std::vector<Vec2>& position, std::size_t begin, std::
   for (std::size_t i = begin; i < end; ++i) sorted_[fill[cell[i - begin]]++] = static_cast<std::uint32_t>(i);
 }
 
-bool NeighbourList::stale(const std::vector<Vec2>& position, std::size_t n_fluid) const {
-  if (!built_ || position.size() != position_at_build_.size() || n_fluid != n_fluid_at_build_) return true;
-  const double limit2 = 0.25 * skin_ * skin_;
+bool moved_more_than(const std::vector<Vec2>& now, const std::vector<Vec2>& then, std::size_t count, double distance) {
+  const double limit2 = distance * distance;
   bool moved = false;
 #pragma omp parallel for reduction(|| : moved) schedule(static)
-  // Every particle: the walls of an elastic plate move too (fixed walls never trip the test).
-  for (std::size_t i = 0; i < position.size(); ++i) moved = moved || norm2(position[i] - position_at_build_[i]) > limit2;
+  for (std::size_t i = 0; i < count; ++i) moved = moved || norm2(now[i] - then[i]) > limit2;
   return moved;
+}
+
+bool NeighbourList::stale(const std::vector<Vec2>& position, std::size_t n_fluid) const {
+  if (!built_ || position.size() != position_at_build_.size() || n_fluid != n_fluid_at_build_) return true;
+  // Every particle: the walls of an elastic plate move too (fixed walls never trip the test).
+  return moved_more_than(position, position_at_build_, position.size(), 0.5 * skin_);
 }
 
 void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid) {

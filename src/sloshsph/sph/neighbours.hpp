@@ -103,6 +103,11 @@ class NeighbourList {
   std::vector<std::uint32_t> index_;
 };
 
+// Whether any of the first `count` points of `now` lies more than `distance` from its place in
+// `then` (a list kept with a skin is stale then). A non-finite position counts as not moved: the
+// driver's own check stops such a run.
+bool moved_more_than(const std::vector<Vec2>& now, const std::vector<Vec2>& then, std::size_t count, double distance);
+
 // Fluid order that follows the cells of a grid of the given size (for memory locality).
 std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::size_t n_fluid, double cell_size);
 
