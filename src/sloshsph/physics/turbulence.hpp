@@ -22,11 +22,11 @@ struct SpsClosure {
 
 // tau / rho of one particle (m^2/s^2); its eddy viscosity nu_t (m^2/s) in `nu_t`.
 inline SymTensor2 sps_stress_of(const VelocityGradient& g, const SpsClosure& c, double& nu_t) {
-  const double sxy = 0.5 * (g.dudy + g.dvdx);
-  const double s_mag = std::sqrt(2.0 * (g.dudx * g.dudx + g.dvdy * g.dvdy + 2.0 * sxy * sxy));
+  const double sxy = 0.5 * (g.c[0][1] + g.c[1][0]);
+  const double s_mag = std::sqrt(2.0 * (g.c[0][0] * g.c[0][0] + g.c[1][1] * g.c[1][1] + 2.0 * sxy * sxy));
   nu_t = c.mixing_length2 * s_mag;
   const double kt = c.ct_dp > 0.0 ? (nu_t / c.ct_dp) * (nu_t / c.ct_dp) : 0.0;
-  return {2.0 * nu_t * g.dudx - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * g.dvdy - 2.0 / 3.0 * kt};
+  return {2.0 * nu_t * g.c[0][0] - 2.0 / 3.0 * kt, 2.0 * nu_t * sxy, 2.0 * nu_t * g.c[1][1] - 2.0 / 3.0 * kt};
 }
 
 }  // namespace sloshsph

@@ -200,10 +200,10 @@ VelocityGradient corrected_velocity_gradient(const Particles& p, const PairList&
     if (q.f == 0.0) return;
     const Vec2 g = correction * (q.rij * q.f);
     const Vec2 du = (p.velocity[q.j] - ui) * volume[q.j];
-    grad.dudx += du.x * g.x;
-    grad.dudy += du.x * g.y;
-    grad.dvdx += du.y * g.x;
-    grad.dvdy += du.y * g.y;
+    grad.c[0][0] += du.x * g.x;
+    grad.c[0][1] += du.x * g.y;
+    grad.c[1][0] += du.y * g.x;
+    grad.c[1][1] += du.y * g.y;
   });
   return grad;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// 2D smoothing kernels with compact support 2h.
+// Smoothing kernels with compact support 2h, in 2 or 3 dimensions: the dimension enters only the
+// normalisation constant (the integral of W over the plane or space is 1).
 // Each kernel offers w(r), and gradient_factor(r) = (dW/dr) / r, so that
 // grad_i W_ij = gradient_factor(r_ij) * (r_i - r_j): no division by r, safe at r = 0.
 #include <algorithm>
@@ -12,13 +13,19 @@ namespace sloshsph {
 // Wendland C2 (thesis eq. 2.3): W = 7/(4 pi h^2) (1 + 2q)(1 - q/2)^4, q = r/h <= 2.
 // dW/dq = 7/(4 pi h^2) (-5q)(1 - q/2)^3. The extracted thesis text prints the
 // derivative with (1 - q/3)^3; the derivative of eq. 2.3 has (1 - q/2)^3.
+// In 3D the same polynomial with 21/(16 pi h^3) (Wendland 1995; Dehnen & Aly 2012, Table 1, whose
+// support radius H is our 2h).
 struct WendlandC2 {
   double h;
   double inv_h;
-  double norm;  // 7 / (4 pi h^2)
+  double norm;  // 7 / (4 pi h^2) in 2D, 21 / (16 pi h^3) in 3D
 
-  explicit WendlandC2(double h_)
-      : h(h_), inv_h(1.0 / h_), norm(7.0 / (4.0 * std::numbers::pi * h_ * h_)) {}
+  explicit WendlandC2(double h_, int dimensions = 2) : h(h_), inv_h(1.0 / h_), norm(normalisation(h_, dimensions)) {}
+
+  static double normalisation(double h, int dimensions) {
+    if (dimensions == 3) return 21.0 / (16.0 * std::numbers::pi * h * h * h);
+    return 7.0 / (4.0 * std::numbers::pi * h * h);
+  }
 
   double support() const { return 2.0 * h; }
 
@@ -54,14 +61,18 @@ struct WendlandC2 {
   double gradient_factor_of(double a) const { return -5.0 * norm * a * a * a * inv_h * inv_h; }
 };
 
-// Cubic B-spline (Monaghan & Lattanzio 1985), 2D normalisation 10 / (7 pi h^2).
+// Cubic B-spline (Monaghan & Lattanzio 1985): normalisation 10 / (7 pi h^2) in 2D, 1 / (pi h^3) in 3D.
 struct CubicSpline {
   double h;
   double inv_h;
   double norm;
 
-  explicit CubicSpline(double h_)
-      : h(h_), inv_h(1.0 / h_), norm(10.0 / (7.0 * std::numbers::pi * h_ * h_)) {}
+  explicit CubicSpline(double h_, int dimensions = 2) : h(h_), inv_h(1.0 / h_), norm(normalisation(h_, dimensions)) {}
+
+  static double normalisation(double h, int dimensions) {
+    if (dimensions == 3) return 1.0 / (std::numbers::pi * h * h * h);
+    return 10.0 / (7.0 * std::numbers::pi * h * h);
+  }
 
   double support() const { return 2.0 * h; }
 
@@ -101,9 +112,9 @@ double kernel_reach2(const K& k) {
 // Calls f(kernel) with the concrete kernel type selected at run time, so that
 // hot loops are compiled once per kernel with no per-pair dispatch.
 template <class F>
-decltype(auto) with_kernel(KernelType type, double h, F&& f) {
-  if (type == KernelType::cubic_spline) return f(CubicSpline(h));
-  return f(WendlandC2(h));
+decltype(auto) with_kernel(KernelType type, double h, F&& f, int dimensions = 2) {
+  if (type == KernelType::cubic_spline) return f(CubicSpline(h, dimensions));
+  return f(WendlandC2(h, dimensions));
 }
 
 }  // namespace sloshsph

@@ -5,21 +5,24 @@
 
 namespace sloshsph {
 
-void CellGrid::build(const std::vector<Vec2>& position, std::size_t begin, std::size_t end, double cell_size) {
+template <int D>
+void BasicCellGrid<D>::build(const std::vector<Vec<D>>& position, std::size_t begin, std::size_t end,
+                             double cell_size) {
   cell_size_ = cell_size;
-  double xmin = std::numeric_limits<double>::max(), ymin = xmin;
-  double xmax = std::numeric_limits<double>::lowest(), ymax = xmax;
+  // The bounding box of the indexed points, one empty cell around it.
+  Vec<D> lowest = componentwise(Vec<D>{}, [](double) { return std::numeric_limits<double>::max(); });
+  Vec<D> highest = -lowest;
   for (std::size_t i = begin; i < end; ++i) {
-    xmin = std::min(xmin, position[i].x);
-    xmax = std::max(xmax, position[i].x);
-    ymin = std::min(ymin, position[i].y);
-    ymax = std::max(ymax, position[i].y);
+    lowest = componentwise(lowest, position[i], [](double a, double b) { return std::min(a, b); });
+    highest = componentwise(highest, position[i], [](double a, double b) { return std::max(a, b); });
   }
-  if (begin == end) xmin = xmax = ymin = ymax = 0.0;
-  origin_ = {xmin - cell_size, ymin - cell_size};
-  nx_ = static_cast<int>((xmax - origin_.x) / cell_size) + 2;
-  ny_ = static_cast<int>((ymax - origin_.y) / cell_size) + 2;
-  const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  if (begin == end) lowest = highest = Vec<D>{};
+  origin_ = componentwise(lowest, [cell_size](double a) { return a - cell_size; });
+  std::size_t ncell = 1;
+  for (int k = 0; k < D; ++k) {
+    n_[k] = static_cast<int>((component(highest, k) - component(origin_, k)) / cell_size) + 2;
+    ncell *= static_cast<std::size_t>(n_[k]);
+  }
   cell_start_.assign(ncell + 1, 0);
   std::vector<std::uint32_t> cell(end - begin);
   for (std::size_t i = begin; i < end; ++i) {
@@ -33,7 +36,9 @@ void CellGrid::build(const std::vector<Vec2>& position, std::size_t begin, std::
   for (std::size_t i = begin; i < end; ++i) sorted_[fill[cell[i - begin]]++] = static_cast<std::uint32_t>(i);
 }
 
-bool moved_more_than(const std::vector<Vec2>& now, const std::vector<Vec2>& then, std::size_t count, double distance) {
+template <int D>
+bool moved_more_than(const std::vector<Vec<D>>& now, const std::vector<Vec<D>>& then, std::size_t count,
+                     double distance) {
   const double limit2 = distance * distance;
   bool moved = false;
 #pragma omp parallel for reduction(|| : moved) schedule(static)
@@ -41,13 +46,15 @@ bool moved_more_than(const std::vector<Vec2>& now, const std::vector<Vec2>& then
   return moved;
 }
 
-bool NeighbourList::stale(const std::vector<Vec2>& position, std::size_t n_fluid) const {
+template <int D>
+bool BasicNeighbourList<D>::stale(const std::vector<Vec<D>>& position, std::size_t n_fluid) const {
   if (!built_ || position.size() != position_at_build_.size() || n_fluid != n_fluid_at_build_) return true;
   // Every particle: the walls of an elastic plate move too (fixed walls never trip the test).
   return moved_more_than(position, position_at_build_, position.size(), 0.5 * skin_);
 }
 
-void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid) {
+template <int D>
+void BasicNeighbourList<D>::build(const std::vector<Vec<D>>& position, std::size_t n_fluid) {
   const std::size_t n = position.size();
   const double radius = support_ + skin_;
   const double r2 = radius * radius;
@@ -56,7 +63,7 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
 
   // A wall particle never lists another wall particle.
   auto for_each_neighbour = [&](std::size_t i, auto&& emit) {
-    const Vec2 pi = position[i];
+    const Vec<D> pi = position[i];
     const bool wall_i = i >= n_fluid;
     grid_.for_each_candidate(pi, radius, [&](std::uint32_t j) {
       if (j == i || (wall_i && j >= n_fluid)) return;
@@ -83,19 +90,22 @@ void NeighbourList::build(const std::vector<Vec2>& position, std::size_t n_fluid
   ++builds_;
 }
 
-std::size_t NeighbourList::memory_bytes() const {
+template <int D>
+std::size_t BasicNeighbourList<D>::memory_bytes() const {
   return offset_.capacity() * sizeof(std::size_t) + index_.capacity() * sizeof(std::uint32_t) +
-         position_at_build_.capacity() * sizeof(Vec2) + grid_.sorted().capacity() * sizeof(std::uint32_t) +
+         position_at_build_.capacity() * sizeof(Vec<D>) + grid_.sorted().capacity() * sizeof(std::uint32_t) +
          grid_.cell_start().capacity() * sizeof(std::uint32_t);
 }
 
-std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::size_t n_fluid, double cell_size) {
-  CellGrid grid;
+template <int D>
+std::vector<std::uint32_t> cell_order(const std::vector<Vec<D>>& position, std::size_t n_fluid, double cell_size) {
+  BasicCellGrid<D> grid;
   grid.build(position, 0, n_fluid, cell_size);
   return grid.sorted();
 }
 
-void NeighbourList::save(StateWriter& w) const {
+template <int D>
+void BasicNeighbourList<D>::save(StateWriter& w) const {
   w.value("neighbours.built", static_cast<std::uint8_t>(built_));
   w.value("neighbours.builds", static_cast<std::uint64_t>(builds_));
   w.value("neighbours.n_fluid", static_cast<std::uint64_t>(n_fluid_at_build_));
@@ -104,15 +114,26 @@ void NeighbourList::save(StateWriter& w) const {
   w.array("neighbours.index", index_);
 }
 
-void NeighbourList::load(StateReader& r) {
+template <int D>
+void BasicNeighbourList<D>::load(StateReader& r) {
   built_ = r.value<std::uint8_t>("neighbours.built") != 0;
   builds_ = static_cast<std::size_t>(r.value<std::uint64_t>("neighbours.builds"));
   n_fluid_at_build_ = static_cast<std::size_t>(r.value<std::uint64_t>("neighbours.n_fluid"));
-  position_at_build_ = r.array<Vec2>("neighbours.position_at_build");
+  position_at_build_ = r.array<Vec<D>>("neighbours.position_at_build");
   offset_ = r.array<std::size_t>("neighbours.offset");
   index_ = r.array<std::uint32_t>("neighbours.index");
   // The grid is a function of the positions at the build: rebuilt, not stored.
   if (built_) grid_.build(position_at_build_, 0, position_at_build_.size(), support_ + skin_);
 }
+
+// The two dimensions.
+template class BasicCellGrid<2>;
+template class BasicCellGrid<3>;
+template class BasicNeighbourList<2>;
+template class BasicNeighbourList<3>;
+template bool moved_more_than<2>(const std::vector<Vec2>&, const std::vector<Vec2>&, std::size_t, double);
+template bool moved_more_than<3>(const std::vector<Vec3>&, const std::vector<Vec3>&, std::size_t, double);
+template std::vector<std::uint32_t> cell_order<2>(const std::vector<Vec2>&, std::size_t, double);
+template std::vector<std::uint32_t> cell_order<3>(const std::vector<Vec3>&, std::size_t, double);
 
 }  // namespace sloshsph

@@ -1,5 +1,7 @@
 #pragma once
-// Cell-linked list and a Verlet neighbour list in compressed-row form.
+// Cell-linked list and a Verlet neighbour list in compressed-row form, for 2 or 3 dimensions
+// (CellGrid and NeighbourList are the 2D ones; the definitions are instantiated for both in
+// neighbours.cpp).
 // The list is built with a skin around the kernel support and reused until some
 // fluid particle has moved more than half the skin; every sweep of a time step
 // then reads the same list (gather style: each particle reads its own row).
@@ -13,59 +15,75 @@
 
 namespace sloshsph {
 
-// Uniform grid of square cells; particle indices sorted by cell (counting sort, stable).
-class CellGrid {
+// Uniform grid of square (cubic in 3D) cells; particle indices sorted by cell (counting sort,
+// stable). Cells are numbered x fastest, then y, then z (a 2D grid is one layer of cells in z).
+template <int D>
+class BasicCellGrid {
  public:
-  void build(const std::vector<Vec2>& position, std::size_t begin, std::size_t end, double cell_size);
+  void build(const std::vector<Vec<D>>& position, std::size_t begin, std::size_t end, double cell_size);
 
   double cell_size() const { return cell_size_; }
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
-  int cell_x(double x) const { return clamp_index(static_cast<int>(std::floor((x - origin_.x) / cell_size_)), nx_); }
-  int cell_y(double y) const { return clamp_index(static_cast<int>(std::floor((y - origin_.y) / cell_size_)), ny_); }
-  int cell_of(Vec2 p) const { return cell_x(p.x) + nx_ * cell_y(p.y); }
+  // Cells along axis k (0: x, 1: y, 2: z; 1 along z in 2D).
+  int cells(int k) const { return n_[k]; }
+  int cell_along(int k, double coordinate) const {
+    return clamp_index(static_cast<int>(std::floor((coordinate - component(origin_, k)) / cell_size_)), n_[k]);
+  }
+  int cell_of(Vec<D> p) const {
+    const int c = cell_along(0, p.x) + n_[0] * cell_along(1, p.y);
+    if constexpr (D == 3) return c + n_[0] * n_[1] * cell_along(2, p.z);
+    else return c;
+  }
   // Particles of cell c: sorted()[cell_start()[c] .. cell_start()[c + 1]).
   const std::vector<std::uint32_t>& cell_start() const { return cell_start_; }
   const std::vector<std::uint32_t>& sorted() const { return sorted_; }
 
-  // Calls f(j) for every indexed particle in the cells overlapping the disc (p, radius).
-  // The caller checks the exact distance.
+  // Calls f(j) for every indexed particle in the cells overlapping the box of half-width
+  // `radius` around p, cell by cell in the order of their numbers. The caller checks the exact
+  // distance.
   template <class F>
-  void for_each_candidate(Vec2 p, double radius, F&& f) const {
+  void for_each_candidate(Vec<D> p, double radius, F&& f) const {
     if (sorted_.empty()) return;
-    const int x0 = cell_x(p.x - radius), x1 = cell_x(p.x + radius);
-    const int y0 = cell_y(p.y - radius), y1 = cell_y(p.y + radius);
-    for (int cy = y0; cy <= y1; ++cy)
-      for (int cx = x0; cx <= x1; ++cx) {
-        const int c = cx + nx_ * cy;
-        for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) f(sorted_[k]);
-      }
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) {
+      lo[k] = cell_along(k, component(p, k) - radius);
+      hi[k] = cell_along(k, component(p, k) + radius);
+    }
+    for (int cz = lo[2]; cz <= hi[2]; ++cz)
+      for (int cy = lo[1]; cy <= hi[1]; ++cy)
+        for (int cx = lo[0]; cx <= hi[0]; ++cx) {
+          const int c = cx + n_[0] * (cy + n_[1] * cz);
+          for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) f(sorted_[k]);
+        }
   }
 
  private:
   static int clamp_index(int i, int n) { return i < 0 ? 0 : (i >= n ? n - 1 : i); }
   double cell_size_ = 1.0;
-  Vec2 origin_;
-  int nx_ = 0, ny_ = 0;
+  Vec<D> origin_;
+  int n_[3] = {0, 0, 1};
   std::vector<std::uint32_t> cell_start_;
   std::vector<std::uint32_t> sorted_;
 };
 
-class NeighbourList {
+using CellGrid = BasicCellGrid<2>;
+using CellGrid3 = BasicCellGrid<3>;
+
+template <int D>
+class BasicNeighbourList {
  public:
   // support: kernel support radius (2h); skin: extra search distance.
-  NeighbourList(double support, double skin) : support_(support), skin_(skin) {}
+  BasicNeighbourList(double support, double skin) : support_(support), skin_(skin) {}
 
   // True when the list must be rebuilt: never built, particle count changed,
   // or a particle (fluid, or the wall of a moving plate) moved more than skin/2 since the last build.
-  bool stale(const std::vector<Vec2>& position, std::size_t n_fluid) const;
+  bool stale(const std::vector<Vec<D>>& position, std::size_t n_fluid) const;
 
   // Rows for all particles: fluid rows hold fluid and wall neighbours, wall rows
   // only fluid neighbours (walls never interact with walls). Self is excluded.
-  void build(const std::vector<Vec2>& position, std::size_t n_fluid);
+  void build(const std::vector<Vec<D>>& position, std::size_t n_fluid);
 
   // Rebuilds if stale; returns true if it did.
-  bool update(const std::vector<Vec2>& position, std::size_t n_fluid) {
+  bool update(const std::vector<Vec<D>>& position, std::size_t n_fluid) {
     if (!stale(position, n_fluid)) return false;
     build(position, n_fluid);
     return true;
@@ -83,7 +101,7 @@ class NeighbourList {
   double search_radius() const { return support_ + skin_; }
   double skin() const { return skin_; }
   std::size_t builds() const { return builds_; }
-  const CellGrid& grid() const { return grid_; }
+  const BasicCellGrid<D>& grid() const { return grid_; }
   std::size_t memory_bytes() const;
 
   // Checkpoints: the list as built (rows, positions at the build), so that a resumed run
@@ -97,18 +115,24 @@ class NeighbourList {
   bool built_ = false;
   std::size_t builds_ = 0;
   std::size_t n_fluid_at_build_ = 0;
-  CellGrid grid_;
-  std::vector<Vec2> position_at_build_;
+  BasicCellGrid<D> grid_;
+  std::vector<Vec<D>> position_at_build_;
   std::vector<std::size_t> offset_;
   std::vector<std::uint32_t> index_;
 };
 
+using NeighbourList = BasicNeighbourList<2>;
+using NeighbourList3 = BasicNeighbourList<3>;
+
 // Whether any of the first `count` points of `now` lies more than `distance` from its place in
 // `then` (a list kept with a skin is stale then). A non-finite position counts as not moved: the
 // driver's own check stops such a run.
-bool moved_more_than(const std::vector<Vec2>& now, const std::vector<Vec2>& then, std::size_t count, double distance);
+template <int D>
+bool moved_more_than(const std::vector<Vec<D>>& now, const std::vector<Vec<D>>& then, std::size_t count,
+                     double distance);
 
 // Fluid order that follows the cells of a grid of the given size (for memory locality).
-std::vector<std::uint32_t> cell_order(const std::vector<Vec2>& position, std::size_t n_fluid, double cell_size);
+template <int D>
+std::vector<std::uint32_t> cell_order(const std::vector<Vec<D>>& position, std::size_t n_fluid, double cell_size);
 
 }  // namespace sloshsph

@@ -1,5 +1,6 @@
 #pragma once
-// The pair layer: every interaction between two particles in a scheme goes through a PairList.
+// The pair layer: every interaction between two particles in a scheme goes through a PairList
+// (PairList3 in 3D: the same code, BasicPairList<D>).
 //
 // A PairList is the Verlet neighbour list (sph/neighbours.hpp) filtered to the kernel's support
 // at one set of positions: it is built once per set of positions a step uses (ISPH: r(t), then
@@ -38,28 +39,30 @@
 namespace sloshsph {
 
 // One pair (i, j) of i's row, as a stage sees it.
-struct Pair {
+template <int D>
+struct BasicPair {
   std::uint32_t j;  // the neighbour
-  Vec2 rij;         // r_i - r_j, m
-  double w;         // W(|r_ij|), 1/m^2
-  double f;         // (dW/dr) / r: grad_i W_ij = f r_ij, 1/m^4
+  Vec<D> rij;       // r_i - r_j, m
+  double w;         // W(|r_ij|), 1/m^2 (1/m^3 in 3D)
+  double f;         // (dW/dr) / r: grad_i W_ij = f r_ij, 1/m^4 (1/m^5 in 3D)
   double r2() const { return norm2(rij); }
 };
 
-class PairList {
+template <int D>
+class BasicPairList {
  public:
   // The pairs of the rows from `first_row` on of `nl` with r_ij^2 within kernel_reach2 at
   // positions `x` (the same particles, fluid then walls, as the list was built for), for the
   // kernel `type` of smoothing length h. Rows before `first_row` are left empty (a pass that reads
   // only the walls' rows need not filter the fluid's).
-  void build(KernelType type, double h, const std::vector<Vec2>& x, const NeighbourList& nl,
+  void build(KernelType type, double h, const std::vector<Vec<D>>& x, const BasicNeighbourList<D>& nl,
              std::size_t first_row = 0) {
     const std::size_t n = nl.rows();
     assert(x.size() == n && "one position per row");
     x_ = &x;
     cubic_ = type == KernelType::cubic_spline;
-    wendland_ = WendlandC2(h);
-    cubic_spline_ = CubicSpline(h);
+    wendland_ = WendlandC2(h, D);
+    cubic_spline_ = CubicSpline(h, D);
     self_w_ = cubic_ ? cubic_spline_.w(0.0) : wendland_.w(0.0);
     reach2_ = cubic_ ? kernel_reach2(cubic_spline_) : kernel_reach2(wendland_);
     begin_.resize(n);
@@ -69,14 +72,14 @@ class PairList {
     for (std::size_t b = 0; b < blocks_.size(); ++b) build_block(b, nl, first_row);
   }
 
-  void build(const WendlandC2& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
+  void build(const WendlandC2& k, const std::vector<Vec<D>>& x, const BasicNeighbourList<D>& nl) {
     build(KernelType::wendland_c2, k.h, x, nl);
   }
-  void build(const CubicSpline& k, const std::vector<Vec2>& x, const NeighbourList& nl) {
+  void build(const CubicSpline& k, const std::vector<Vec<D>>& x, const BasicNeighbourList<D>& nl) {
     build(KernelType::cubic_spline, k.h, x, nl);
   }
 
-  // Calls body(const Pair&) for each pair of row i, in the row's order.
+  // Calls body(const BasicPair<D>&) for each pair of row i, in the row's order.
   template <class Body>
   void for_each(std::size_t i, Body&& body) const {
     row(i, body);
@@ -108,8 +111,8 @@ class PairList {
   };
 
   // Filters block b's rows into its arrays.
-  void build_block(std::size_t b, const NeighbourList& nl, std::size_t first_row) {
-    const std::vector<Vec2>& x = *x_;
+  void build_block(std::size_t b, const BasicNeighbourList<D>& nl, std::size_t first_row) {
+    const std::vector<Vec<D>>& x = *x_;
     Block& block = blocks_[b];
     const std::size_t first = b * kBlockRows, last = std::min(first + kBlockRows, nl.rows());
     const std::uint32_t* index = nl.begin(0);
@@ -122,7 +125,7 @@ class PairList {
       }
       const std::size_t candidates = nl.count(i);
       if (block.j.size() < out + candidates) grow(block, out + candidates, out, i - first, last - i - 1);
-      const Vec2 ri = x[i];
+      const Vec<D> ri = x[i];
       std::uint32_t* j_out = block.j.data();
       double* r2_out = block.w.data();
       // Without a branch on the cut-off (a third of the Verlet row is skin, in no predictable
@@ -172,8 +175,8 @@ class PairList {
 
   template <class Body>
   void row(std::size_t i, Body& body) const {
-    const std::vector<Vec2>& x = *x_;
-    const Vec2 ri = x[i];
+    const std::vector<Vec<D>>& x = *x_;
+    const Vec<D> ri = x[i];
     const Block& block = blocks_[i / kBlockRows];
     const std::uint32_t* j = block.j.data();
     const double* w = block.w.data();
@@ -181,10 +184,10 @@ class PairList {
     // The bounds in locals: a body that writes 32-bit integers (the PPE's column indices) could
     // otherwise alias end_ and make the compiler load it again at every pair.
     const std::size_t begin = begin_[i], end = end_[i];
-    for (std::size_t s = begin; s < end; ++s) body(Pair{j[s], ri - x[j[s]], w[s], f[s]});
+    for (std::size_t s = begin; s < end; ++s) body(BasicPair<D>{j[s], ri - x[j[s]], w[s], f[s]});
   }
 
-  const std::vector<Vec2>* x_ = nullptr;
+  const std::vector<Vec<D>>* x_ = nullptr;
   bool cubic_ = false;
   WendlandC2 wendland_{1.0};
   CubicSpline cubic_spline_{1.0};
@@ -193,5 +196,10 @@ class PairList {
   std::vector<std::uint32_t> begin_, end_;  // row i's pairs: slots [begin_[i], end_[i]) of its block
   std::vector<Block> blocks_;
 };
+
+using Pair = BasicPair<2>;
+using PairList = BasicPairList<2>;
+using Pair3 = BasicPair<3>;
+using PairList3 = BasicPairList<3>;
 
 }  // namespace sloshsph
