@@ -24,7 +24,8 @@ void compact_prefix(std::vector<T>& v, std::size_t n_prefix, const std::vector<s
 
 // Every per-particle array must have the length of `position`; a store built by hand
 // that misses one would otherwise be read out of bounds by the permutation.
-void require_consistent(const Particles& p) {
+template <int D>
+void require_consistent(const BasicParticles<D>& p) {
   const std::size_t n = p.size();
   if (p.velocity.size() != n || p.pressure.size() != n || p.pressure_back.size() != n ||
       p.density.size() != n || p.normal.size() != n || p.id.size() != n || p.n_fluid > n ||
@@ -35,8 +36,9 @@ void require_consistent(const Particles& p) {
 
 }  // namespace
 
-void Particles::permute_fluid(const std::vector<std::uint32_t>& order) {
-  std::vector<Vec2> s2;
+template <int D>
+void BasicParticles<D>::permute_fluid(const std::vector<std::uint32_t>& order) {
+  std::vector<Vec<D>> s2;
   std::vector<double> s1;
   std::vector<std::int32_t> si;
   require_consistent(*this);
@@ -49,7 +51,8 @@ void Particles::permute_fluid(const std::vector<std::uint32_t>& order) {
   permute_prefix(id, order, si);
 }
 
-void Particles::remove_fluid(const std::vector<std::uint8_t>& remove) {
+template <int D>
+void BasicParticles<D>::remove_fluid(const std::vector<std::uint8_t>& remove) {
   require_consistent(*this);
   const std::size_t n = n_fluid;
   compact_prefix(position, n, remove);
@@ -63,5 +66,8 @@ void Particles::remove_fluid(const std::vector<std::uint8_t>& remove) {
   for (std::size_t i = 0; i < n; ++i) removed += remove[i] ? 1 : 0;
   n_fluid -= removed;
 }
+
+template struct BasicParticles<2>;
+template struct BasicParticles<3>;
 
 }  // namespace sloshsph

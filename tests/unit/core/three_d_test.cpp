@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "sloshsph/core/particles.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 #include "sloshsph/sph/operators.hpp"
@@ -235,6 +236,30 @@ TEST(ThreeD, OperatorsOnLinearAndQuadraticFields) {
     ++checked;
   }
   EXPECT_EQ(checked, 7 * 7 * 7);
+}
+
+TEST(ThreeD, ParticleStoreReordersAndRemovesWithAllThreeComponents) {
+  // The store of the 2D schemes in 3D: a permutation and a removal of fluid carry x, y and z of
+  // positions, velocities and normals with the particle; the walls stay where they are.
+  Particles3 p;
+  p.resize(5);
+  p.n_fluid = 3;
+  for (std::size_t i = 0; i < 5; ++i) {
+    const double v = static_cast<double>(i);
+    p.position[i] = {v, 10.0 + v, 20.0 + v};
+    p.velocity[i] = {-v, -10.0 - v, -20.0 - v};
+    p.id[i] = static_cast<std::int32_t>(i);
+  }
+  p.permute_fluid({2, 0, 1});
+  EXPECT_EQ(p.id[0], 2);
+  EXPECT_EQ(p.position[0].z, 22.0);
+  EXPECT_EQ(p.velocity[1].z, -20.0);
+  p.remove_fluid({0, 1, 0});
+  ASSERT_EQ(p.n_fluid, 2u);
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_EQ(p.id[1], 1);
+  EXPECT_EQ(p.position[1].z, 21.0);
+  EXPECT_EQ(p.position[2].z, 23.0);  // the first wall particle
 }
 
 }  // namespace

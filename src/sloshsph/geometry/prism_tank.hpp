@@ -1,0 +1,51 @@
+#pragma once
+// Three-dimensional tanks made by extruding a tank section over a breadth (issue 31, section 2): a
+// box is the rectangle section extruded, and every other section sloshsph has (sloped, parabolic,
+// circular, polyline) gives a prismatic tank the same way. Axes: x along the length (the section's
+// x), y across the breadth (0 to `breadth`), z up (the section's y), as the issue's probes have them.
+//
+// Not yet used by a scheme or a case: the first 3D geometry, on which the 3D scheme will stand.
+#include <vector>
+
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/geometry/tank.hpp"
+
+namespace sloshsph {
+
+// The point of the section at `s` (x, height) at the breadth coordinate y.
+inline constexpr Vec3 at_breadth(Vec2 s, double y) { return {s.x, y, s.y}; }
+// The section coordinates (x, height) of a point.
+inline constexpr Vec2 in_section(Vec3 p) { return {p.x, p.z}; }
+
+struct PrismTank {
+  TankGeometry section;  // in the x-z plane, as TankGeometry's (x, y)
+  double breadth = 0.0;  // m, between the end walls y = 0 and y = breadth
+
+  // Positive inside the fluid region: the smaller of the section's signed distance of (x, z) and
+  // the distances y and breadth - y to the end walls. Exact inside and on the walls; outside, its
+  // magnitude is the larger of the two distances (at an edge, at most the true distance).
+  double signed_distance(Vec3 p) const;
+};
+
+struct WallSample3 {
+  Vec3 position;
+  Vec3 normal;  // inward unit normal of the wall at this particle
+};
+
+// Dummy wall particles, `layers` deep:
+//  * the section's wall layers (sample_walls) repeated at y = (k + 1/2) dp along the breadth, and
+//    through the end walls' layers (k from -layers to n_y + layers - 1, n_y = breadth/dp rounded
+//    down), so that the edges where side and end walls meet are filled; their normals lie in the
+//    section plane;
+//  * the end walls: `layers` planes at y = -(k + 1/2) dp and breadth + (k + 1/2) dp, each on the
+//    fill's lattice of the section (x_min + (i + 1/2) dp, z_bottom + (j + 1/2) dp) wherever that
+//    lattice is at least dp/2 inside the section, up to the top of the walls; normals +y and -y.
+// For a box whose length, breadth and height dp divides, every wall particle stands on the fluid's
+// lattice continued through the walls.
+std::vector<WallSample3> sample_walls(const PrismTank& tank, double dp, int layers);
+
+// Fluid particles: the section's fill (fill_fluid: lattice points below `depth`, at least dp/2 from
+// the wall) at y = (k + 1/2) dp, k = 0 .. n_y - 1.
+std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth);
+
+}  // namespace sloshsph
