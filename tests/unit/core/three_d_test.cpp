@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sloshsph/core/particles.hpp"
+#include "sloshsph/physics/frame.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 #include "sloshsph/sph/operators.hpp"
@@ -260,6 +261,35 @@ TEST(ThreeD, ParticleStoreReordersAndRemovesWithAllThreeComponents) {
   EXPECT_EQ(p.id[1], 1);
   EXPECT_EQ(p.position[1].z, 21.0);
   EXPECT_EQ(p.position[2].z, 23.0);  // the first wall particle
+}
+
+TEST(ThreeD, FrameForceAboutTheVerticalIsThePlaneOne) {
+  // Reference: the 2D frame force (Euler, centrifugal, Coriolis about the out-of-plane axis) of the
+  // same motion. A 3D frame turning about z at omega, alpha acts in the x-y plane as the 2D frame
+  // does; to round-off (1e-12 of the largest term).
+  FrameForce f2;
+  f2.uniform = {0.3, -9.81};
+  f2.omega = 0.7;
+  f2.alpha = -1.3;
+  f2.pivot = {0.25, 0.1};
+  FrameForce3 f3;
+  f3.uniform = {0.3, -9.81, 0.0};
+  f3.omega = {0.0, 0.0, 0.7};
+  f3.alpha = {0.0, 0.0, -1.3};
+  f3.pivot = {0.25, 0.1, 0.5};
+  const Vec2 r{0.9, -0.4}, u{1.5, 0.8};
+  const Vec2 a2 = f2.at(r, u);
+  const Vec3 a3 = f3.at({r.x, r.y, 2.0}, {u.x, u.y, 0.0});
+  EXPECT_NEAR(a3.x, a2.x, 1e-12 * 10.0);
+  EXPECT_NEAR(a3.y, a2.y, 1e-12 * 10.0);
+  EXPECT_EQ(a3.z, 0.0);
+  EXPECT_TRUE(f3.rotating());
+  // A roll about x: the centrifugal force points away from the axis, omega^2 times the distance.
+  FrameForce3 roll;
+  roll.omega = {2.0, 0.0, 0.0};
+  const Vec3 c = roll.at({0.0, 0.0, 0.5}, {});
+  EXPECT_NEAR(c.z, 4.0 * 0.5, 1e-12);
+  EXPECT_NEAR(c.y, 0.0, 1e-12);
 }
 
 }  // namespace
