@@ -21,36 +21,40 @@ constexpr std::size_t kMaxLevels = 40;
 template <class V> std::size_t capacity_bytes(const V& v) { return v.capacity() * sizeof(typename V::value_type); }
 
 // The aggregates of the next level: the rows of the finer level whose cells, halved `shift`
-// times, coincide. Rows are numbered in the order of their cells (row-major), members in the
-// order of the finer rows, so the numbering does not depend on the thread count.
-void aggregate(const std::vector<std::int64_t>& fine_x, const std::vector<std::int64_t>& fine_y, int shift,
-               Multigrid& mg, MultigridLevel& L) {
-  const std::size_t n = fine_x.size();
-  std::int64_t x0 = std::numeric_limits<std::int64_t>::max(), y0 = x0, x1 = std::numeric_limits<std::int64_t>::min();
-  for (std::size_t i = 0; i < n; ++i) {
-    x0 = std::min(x0, fine_x[i] >> shift);
-    x1 = std::max(x1, fine_x[i] >> shift);
-    y0 = std::min(y0, fine_y[i] >> shift);
+// times, coincide. Rows are numbered in the order of their cells (x fastest, then y, then z),
+// members in the order of the finer rows, so the numbering does not depend on the thread count.
+// `fine` holds the cells along each axis; in 2D the z axis is left empty.
+void aggregate(const CellIndices& fine, int shift, Multigrid& mg, MultigridLevel& L) {
+  const std::size_t n = fine[0].size();
+  const int axes = fine[2].empty() ? 2 : 3;
+  std::int64_t low[3], high[3];
+  for (int k = 0; k < axes; ++k) {
+    low[k] = std::numeric_limits<std::int64_t>::max();
+    high[k] = std::numeric_limits<std::int64_t>::min();
+    for (std::size_t i = 0; i < n; ++i) {
+      low[k] = std::min(low[k], fine[k][i] >> shift);
+      high[k] = std::max(high[k], fine[k][i] >> shift);
+    }
   }
-  const auto width = static_cast<std::uint64_t>(x1 - x0 + 1);
+  const auto width = static_cast<std::uint64_t>(high[0] - low[0] + 1);
+  const auto depth = static_cast<std::uint64_t>(high[1] - low[1] + 1);
   auto& keys = mg.sort_keys;
   keys.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    keys[i] = {static_cast<std::uint64_t>((fine_y[i] >> shift) - y0) * width +
-                   static_cast<std::uint64_t>((fine_x[i] >> shift) - x0),
-               static_cast<std::uint32_t>(i)};
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t row = static_cast<std::uint64_t>((fine[1][i] >> shift) - low[1]);
+    if (axes == 3) row += static_cast<std::uint64_t>((fine[2][i] >> shift) - low[2]) * depth;
+    keys[i] = {row * width + static_cast<std::uint64_t>((fine[0][i] >> shift) - low[0]), static_cast<std::uint32_t>(i)};
+  }
   std::sort(keys.begin(), keys.end());
   L.parent.resize(n);
   L.member.resize(n);
   L.member_begin.clear();
-  L.cell_x.clear();
-  L.cell_y.clear();
+  for (int k = 0; k < 3; ++k) L.cell[k].clear();
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t i = keys[k].second;
     if (k == 0 || keys[k].first != keys[k - 1].first) {
       L.member_begin.push_back(k);
-      L.cell_x.push_back(fine_x[i] >> shift);
-      L.cell_y.push_back(fine_y[i] >> shift);
+      for (int a = 0; a < axes; ++a) L.cell[a].push_back(fine[a][i] >> shift);
     }
     L.member[k] = i;
     L.parent[i] = static_cast<std::uint32_t>(L.member_begin.size() - 1);
@@ -189,34 +193,35 @@ void cycle(Multigrid& mg, const LevelView& fine, std::size_t next) {
 }  // namespace
 
 std::size_t Multigrid::memory_bytes() const {
-  std::size_t bytes = capacity_bytes(fine_inverse_diagonal) + capacity_bytes(fine_r) + capacity_bytes(fine_cell_x) + capacity_bytes(fine_cell_y) +
+  std::size_t bytes = capacity_bytes(fine_inverse_diagonal) + capacity_bytes(fine_r) + capacity_bytes(fine_cell[0]) + capacity_bytes(fine_cell[1]) + capacity_bytes(fine_cell[2]) +
                       capacity_bytes(sort_keys) + capacity_bytes(row_length) + static_cast<std::size_t>(coarsest_dense.size()) * sizeof(double) * 2;
   for (const auto& v : stamp) bytes += capacity_bytes(v);
   for (const auto& v : slot) bytes += capacity_bytes(v);
   for (const MultigridLevel& L : levels)
     bytes += L.A.memory_bytes() + capacity_bytes(L.inverse_diagonal) + capacity_bytes(L.member_begin) +
-             capacity_bytes(L.member) + capacity_bytes(L.parent) + capacity_bytes(L.cell_x) +
-             capacity_bytes(L.cell_y) + capacity_bytes(L.b) + capacity_bytes(L.x) + capacity_bytes(L.r);
+             capacity_bytes(L.member) + capacity_bytes(L.parent) + capacity_bytes(L.cell[0]) +
+             capacity_bytes(L.cell[1]) + capacity_bytes(L.cell[2]) + capacity_bytes(L.b) + capacity_bytes(L.x) + capacity_bytes(L.r);
   return bytes;
 }
 
-bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, double cell, Multigrid& mg) {
+template <int D>
+bool build_multigrid(const SparseRows& A, const std::vector<Vec<D>>& position, double cell, Multigrid& mg) {
   mg.ready = false;
   const std::size_t n = A.rows();
   refresh_fine_diagonal(A, mg);
   const std::vector<double>& inverse_diagonal = mg.fine_inverse_diagonal;
   if (n <= mg.options.coarsest_rows || !(cell > 0.0)) return false;
-  mg.fine_cell_x.resize(n);
-  mg.fine_cell_y.resize(n);
+  for (int k = 0; k < 3; ++k) mg.fine_cell[k].resize(k < D ? n : 0);
   // A position that is not finite (a run about to fail its finite-value check) or absurdly far
   // has no cell: that step keeps the Jacobi preconditioner.
-  constexpr double kFarthestCell = 1e9;  // so that the cell keys (y * width + x) fit in 64 bits
-  for (std::size_t i = 0; i < n; ++i) {
-    const double cx = std::floor(position[i].x / cell), cy = std::floor(position[i].y / cell);
-    if (!(std::abs(cx) < kFarthestCell && std::abs(cy) < kFarthestCell)) return false;
-    mg.fine_cell_x[i] = static_cast<std::int64_t>(cx);
-    mg.fine_cell_y[i] = static_cast<std::int64_t>(cy);
-  }
+  // So that the cell keys ((z depth + y) width + x) fit in 64 bits.
+  constexpr double kFarthestCell = D == 2 ? 1e9 : 1e6;
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) {
+      const double c = std::floor(component(position[i], k) / cell);
+      if (!(std::abs(c) < kFarthestCell)) return false;
+      mg.fine_cell[k][i] = static_cast<std::int64_t>(c);
+    }
   // Level k aggregates the rows of level k - 1 (the caller's matrix for k = 0). Levels are
   // addressed by index: emplace_back may move them.
   std::size_t count = 0;
@@ -224,11 +229,11 @@ bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, dou
     if (mg.levels.size() <= count) mg.levels.emplace_back();
     MultigridLevel& L = mg.levels[count];
     if (count == 0) {
-      aggregate(mg.fine_cell_x, mg.fine_cell_y, 0, mg, L);
+      aggregate(mg.fine_cell, 0, mg, L);
       galerkin(A, inverse_diagonal, mg, L);
     } else {
       const MultigridLevel& F = mg.levels[count - 1];
-      aggregate(F.cell_x, F.cell_y, 1, mg, L);
+      aggregate(F.cell, 1, mg, L);
       galerkin(F.A, F.inverse_diagonal, mg, L);
     }
     ++count;
@@ -239,6 +244,9 @@ bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, dou
   mg.ready = factor_coarsest(mg);
   return mg.ready;
 }
+
+template bool build_multigrid<2>(const SparseRows&, const std::vector<Vec2>&, double, Multigrid&);
+template bool build_multigrid<3>(const SparseRows&, const std::vector<Vec3>&, double, Multigrid&);
 
 void refresh_fine_diagonal(const SparseRows& A, Multigrid& mg) {
   const std::size_t n = A.rows();

@@ -22,6 +22,7 @@
 // iterations (3.1 against 5.1) but not time.
 // Every loop is a gather in a fixed order, so a cycle gives the same bits on any thread count,
 // and it is a fixed linear operator, as a Krylov preconditioner must be.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -42,6 +43,9 @@ struct MultigridOptions {
   std::size_t coarsest_rows = 96;
 };
 
+// The cell of each row along x, y and z (z empty in 2D).
+using CellIndices = std::array<std::vector<std::int64_t>, 3>;
+
 // One level below the finest: its operator, and how its rows gather the finer level's rows.
 struct MultigridLevel {
   SparseRows A;
@@ -49,7 +53,7 @@ struct MultigridLevel {
   std::vector<std::size_t> member_begin;  // this level's row I aggregates finer rows
   std::vector<std::uint32_t> member;      //   member[member_begin[I] .. member_begin[I + 1])
   std::vector<std::uint32_t> parent;      // the finer level's row -> this level's row
-  std::vector<std::int64_t> cell_x, cell_y;  // the cell of each row (its key for the next level)
+  CellIndices cell;                       // the cell of each row (its key for the next level)
   std::vector<double> b, x, r;            // right side, correction, residual
 };
 
@@ -59,7 +63,7 @@ struct Multigrid {
   Eigen::PartialPivLU<Eigen::MatrixXd> coarsest;
   Eigen::MatrixXd coarsest_dense;
   std::vector<double> fine_inverse_diagonal, fine_r;  // of the finest level
-  std::vector<std::int64_t> fine_cell_x, fine_cell_y;
+  CellIndices fine_cell;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> sort_keys;  // (cell, row)
   std::vector<std::size_t> row_length;
   std::vector<std::vector<std::int32_t>> stamp, slot;  // per thread: coarse column -> last row, slot
@@ -73,7 +77,9 @@ class StateReader;
 // Builds the hierarchy for A (diagonal first in each row, as SparseRows holds it), the rows at
 // `position` (m), the fine aggregates cells of side `cell` (m). Returns false (and leaves
 // mg.ready false) when the coarsest matrix is singular or not finite.
-bool build_multigrid(const SparseRows& A, const std::vector<Vec2>& position, double cell, Multigrid& mg);
+// In 2 or 3 dimensions (aggregates of cells of side `cell`).
+template <int D>
+bool build_multigrid(const SparseRows& A, const std::vector<Vec<D>>& position, double cell, Multigrid& mg);
 
 // The finest level's diagonal from A, for a hierarchy built for an earlier matrix of the same rows
 // (IsphScheme keeps a hierarchy for several steps, docs/physics.md): the smoother and the
