@@ -51,7 +51,7 @@ struct ShiftingRule {
   double coefficient = 2.0;  // A of D = A h |u| dt (Lind et al. 2012); unused by the WCSPH shift
   double h = 0.0;            // m, smoothing length
   double dp = 0.0;           // m, particle spacing
-  double w_dp = 0.0;         // W(dp), 1/m^2, for the anti-clustering term
+  double w_dp = 0.0;         // W(dp), 1/m^2 (1/m^3 in 3D), for the anti-clustering term
   double max_shift = 0.0;    // m, the longest shift of one step
 };
 
@@ -59,16 +59,19 @@ struct ShiftingRule {
 // 1 + 0.2 (W_ij / W(dp))^4 of Lind et al. (2012), which drives the shift, and `plain` without it,
 // which gives the free-surface normal. (Taken from the shift's own gradient, the normal would be
 // parallel to the shift, and removing the normal part would leave nothing near the surface.)
+template <int D>
 struct ConcentrationGradient {
-  Vec2 shifting;
-  Vec2 plain;
+  Vec<D> shifting;
+  Vec<D> plain;
 };
-inline ConcentrationGradient concentration_gradient(const PairList& pairs, double volume, double w_dp, std::size_t i) {
-  ConcentrationGradient g;
-  pairs.for_each(i, [&](const Pair& q) {
+template <int D>
+ConcentrationGradient<D> concentration_gradient(const BasicPairList<D>& pairs, double volume, double w_dp,
+                                                std::size_t i) {
+  ConcentrationGradient<D> g;
+  pairs.for_each(i, [&](const BasicPair<D>& q) {
     const double ratio = q.w / w_dp;
     const double r2 = ratio * ratio;
-    const Vec2 term = q.rij * (volume * q.f);
+    const Vec<D> term = q.rij * (volume * q.f);
     g.plain += term;
     g.shifting += term * (1.0 + 0.2 * r2 * r2);
   });
@@ -77,7 +80,8 @@ inline ConcentrationGradient concentration_gradient(const PairList& pairs, doubl
 
 // The shift with its component along grad C (the surface normal, from the plain gradient) removed
 // (Lind et al. 2012, 3.2).
-inline Vec2 along_free_surface(Vec2 shift, Vec2 grad_c) {
+template <int D>
+Vec<D> along_free_surface(Vec<D> shift, Vec<D> grad_c) {
   const double g2 = norm2(grad_c);
   if (g2 == 0.0) return shift;
   return shift - grad_c * (dot(shift, grad_c) / g2);
@@ -85,26 +89,30 @@ inline Vec2 along_free_surface(Vec2 shift, Vec2 grad_c) {
 
 // Wall particle j's plane as fluid at ri sees it: the normal on ri's side (a thin plate or slat
 // has fluid on both faces) and ri's distance from the plane along it.
+template <int D>
 struct WallPlane {
-  Vec2 normal;
+  Vec<D> normal;
   double distance;
 };
-inline WallPlane wall_plane_seen_from(const Particles& p, std::size_t j, Vec2 ri) {
+template <int D>
+WallPlane<D> wall_plane_seen_from(const BasicParticles<D>& p, std::size_t j, Vec<D> ri) {
   const double s = dot(ri - p.position[j], p.normal[j]);
-  return s >= 0.0 ? WallPlane{p.normal[j], s} : WallPlane{-p.normal[j], -s};
+  return s >= 0.0 ? WallPlane<D>{p.normal[j], s} : WallPlane<D>{-p.normal[j], -s};
 }
 
 // `shift` of fluid particle i (at p.position[i]) limited so that it brings the particle no closer
 // than dp to the plane of any wall particle among its pairs; a particle already closer may not
 // come closer still. Returns whether the shift was cut.
-inline bool keep_shift_off_walls(const Particles& p, const PairList& pairs, std::size_t i, double dp, Vec2& shift) {
-  const Vec2 ri = p.position[i];
+template <int D>
+bool keep_shift_off_walls(const BasicParticles<D>& p, const BasicPairList<D>& pairs, std::size_t i, double dp,
+                          Vec<D>& shift) {
+  const Vec<D> ri = p.position[i];
   // The most negative move along the plane's normal that keeps the particle dp from it.
-  auto allowed = [dp](const WallPlane& w) { return -std::max(w.distance - dp, 0.0); };
+  auto allowed = [dp](const WallPlane<D>& w) { return -std::max(w.distance - dp, 0.0); };
   bool cut = false;
-  pairs.for_each(i, [&](const Pair& q) {
+  pairs.for_each(i, [&](const BasicPair<D>& q) {
     if (p.is_fluid(q.j)) return;
-    const WallPlane w = wall_plane_seen_from(p, q.j, ri);
+    const WallPlane<D> w = wall_plane_seen_from(p, q.j, ri);
     const double towards = dot(shift, w.normal);
     if (towards >= allowed(w)) return;
     shift += w.normal * (allowed(w) - towards);
@@ -113,10 +121,10 @@ inline bool keep_shift_off_walls(const Particles& p, const PairList& pairs, std:
   if (!cut) return false;
   // A later limit can undo an earlier one only where wall normals point against each other (both
   // faces of a thin plate in one kernel): no shift at all then.
-  pairs.for_each(i, [&](const Pair& q) {
+  pairs.for_each(i, [&](const BasicPair<D>& q) {
     if (p.is_fluid(q.j)) return;
-    const WallPlane w = wall_plane_seen_from(p, q.j, ri);
-    if (dot(shift, w.normal) < allowed(w) - 1e-12 * dp) shift = Vec2{};
+    const WallPlane<D> w = wall_plane_seen_from(p, q.j, ri);
+    if (dot(shift, w.normal) < allowed(w) - 1e-12 * dp) shift = Vec<D>{};
   });
   return true;
 }
@@ -126,37 +134,39 @@ inline bool keep_shift_off_walls(const Particles& p, const PairList& pairs, std:
 enum : std::uint8_t { kShiftInterior = 0, kShiftSurface = 1, kShiftSpray = 2 };
 
 // Scratch of shift_fluid, kept by the scheme between steps.
-struct ShiftingWork {
-  std::vector<Vec2> shift;           // delta_r of each fluid particle, m
-  std::vector<Vec2> velocity;        // (delta_r . grad) u, m/s
+template <int D>
+struct BasicShiftingWork {
+  std::vector<Vec<D>> shift;         // delta_r of each fluid particle, m
+  std::vector<Vec<D>> velocity;      // (delta_r . grad) u, m/s
   std::vector<double> density;       // (delta_r . grad) rho (WCSPH), kg/m^3
   std::size_t memory_bytes() const {
-    return (shift.capacity() + velocity.capacity()) * sizeof(Vec2) + density.capacity() * sizeof(double);
+    return (shift.capacity() + velocity.capacity()) * sizeof(Vec<D>) + density.capacity() * sizeof(double);
   }
 };
+using ShiftingWork = BasicShiftingWork<2>;
 
 // The shift of every fluid particle of `p` (pairs at about its present positions), with
 // diffusion coefficient diffusion(i) (m^2), the surface treatment, the limits and the Taylor
 // correction of the velocity (and of the density, when `density` is given: the WCSPH scheme
 // carries it). Every shift is worked out before any particle moves (gather), so the result does not
 // depend on the thread count. Returns how many shifts were cut by a limit.
-template <class Diffusion>
-std::size_t shift_fluid(Particles& p, const PairList& pairs, const std::vector<std::uint8_t>& surface,
+template <int D, class Diffusion>
+std::size_t shift_fluid(BasicParticles<D>& p, const BasicPairList<D>& pairs, const std::vector<std::uint8_t>& surface,
                         const ShiftingRule& rule, Diffusion&& diffusion, std::vector<double>* density,
-                        ShiftingWork& work) {
+                        BasicShiftingWork<D>& work) {
   const double V = p.volume;
   const std::size_t nf = p.n_fluid;
-  work.shift.assign(nf, Vec2{});
-  work.velocity.assign(nf, Vec2{});
+  work.shift.assign(nf, Vec<D>{});
+  work.velocity.assign(nf, Vec<D>{});
   work.density.assign(density ? nf : 0, 0.0);
   std::size_t cut = 0;
 #pragma omp parallel for schedule(static) reduction(+ : cut)
   for (std::size_t i = 0; i < nf; ++i) {
     if (surface[i] == kShiftSpray) continue;  // too little fluid in its kernel to define C
     bool near_surface = surface[i] == kShiftSurface;
-    pairs.for_each(i, [&](const Pair& q) { near_surface |= p.is_fluid(q.j) && surface[q.j] != kShiftInterior; });
-    const ConcentrationGradient grad_c = concentration_gradient(pairs, V, rule.w_dp, i);
-    Vec2 shift = grad_c.shifting * -diffusion(i);
+    pairs.for_each(i, [&](const BasicPair<D>& q) { near_surface |= p.is_fluid(q.j) && surface[q.j] != kShiftInterior; });
+    const ConcentrationGradient<D> grad_c = concentration_gradient(pairs, V, rule.w_dp, i);
+    Vec<D> shift = grad_c.shifting * -diffusion(i);
     if (near_surface) shift = along_free_surface(shift, grad_c.plain);
     bool limited = false;
     const double length = norm(shift);
@@ -168,11 +178,11 @@ std::size_t shift_fluid(Particles& p, const PairList& pairs, const std::vector<s
     cut += limited ? 1 : 0;
     // (delta_r . grad) phi with the SPH gradient sum_j V (phi_j - phi_i) grad_i W_ij; a wall
     // neighbour carries its wall values (ISPH: the free-slip image velocity).
-    const Vec2 ui = p.velocity[i];
+    const Vec<D> ui = p.velocity[i];
     const double rho_i = p.density[i];
-    Vec2 du;
+    Vec<D> du;
     double drho = 0.0;
-    pairs.for_each(i, [&](const Pair& q) {
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       const double along = V * q.f * dot(q.rij, shift);
       du += (p.velocity[q.j] - ui) * along;
       if (density) drho += (p.density[q.j] - rho_i) * along;

@@ -29,7 +29,8 @@ namespace sloshsph {
 
 // Acceleration (m/s^2) of fluid particle i from first-layer wall particle w; x_iw = r_i - r_w,
 // strength D = coefficient g H_w (m^2/s^2), range r0 (m).
-inline Vec2 thesis_wall_repulsion(Vec2 x_iw, double strength, double range) {
+template <int D>
+Vec<D> thesis_wall_repulsion(Vec<D> x_iw, double strength, double range) {
   const double r2 = norm2(x_iw);
   if (!(r2 > 0.0) || r2 >= range * range) return {};
   const double r = std::sqrt(r2);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <stdexcept>
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/core/state_io.hpp"
@@ -15,7 +16,8 @@
 
 namespace sloshsph {
 
-void IsphData::resize(std::size_t n) {
+template <int D>
+void BasicIsphData<D>::resize(std::size_t n) {
   velocity_old.resize(n);
   velocity_star.resize(n);
   position_star.resize(n);
@@ -37,17 +39,44 @@ std::uint8_t free_surface_flag(double fluid_sum, double wall_sum, double total, 
   return fluid_fraction < kSplashFraction ? 2 : total < threshold * full ? 1 : 0;
 }
 
-double lattice_number_density(KernelType type, double h, double dp) {
-  return with_kernel(type, h, [&](const auto& k) {
-    const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
-    double sum = 0.0;
+// Calls f(r^2 / dp^2) for every point of the square (dimensions 2) or cubic (3) lattice of unit
+// spacing within n steps of the origin along each axis, in one fixed order.
+template <class F>
+void for_each_lattice_point(int dimensions, int n, F&& f) {
+  const int nc = dimensions == 3 ? n : 0;
+  for (int c = -nc; c <= nc; ++c)
     for (int a = -n; a <= n; ++a)
-      for (int b = -n; b <= n; ++b) sum += k.w(dp * std::sqrt(double(a * a + b * b)));
-    return sum;
-  });
+      for (int b = -n; b <= n; ++b) f(a, b, c);
 }
 
-IsphScheme::IsphScheme(const CaseSpec& spec, double h)
+// dp^2 or dp^3, and x dp^2 or x dp^3, multiplied out in the order the 2D code always had them
+// (so that 2D keeps its bits).
+template <int D>
+double particle_volume(double dp) {
+  if constexpr (D == 2) return dp * dp;
+  else return dp * dp * dp;
+}
+template <int D>
+double times_particle_volume(double x, double dp) {
+  if constexpr (D == 2) return x * dp * dp;
+  else return x * dp * dp * dp;
+}
+
+double lattice_number_density(KernelType type, double h, double dp, int dimensions) {
+  return with_kernel(
+      type, h,
+      [&](const auto& k) {
+        const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+        double sum = 0.0;
+        for_each_lattice_point(dimensions, n,
+                               [&](int a, int b, int c) { sum += k.w(dp * std::sqrt(double(a * a + b * b + c * c))); });
+        return sum;
+      },
+      dimensions);
+}
+
+template <int D>
+BasicIsphScheme<D>::BasicIsphScheme(const CaseSpec& spec, double h)
     : scheme_(spec.scheme),
       kernel_type_(spec.particles.kernel),
       h_(h),
@@ -55,25 +84,27 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
       rho0_(spec.fluid.density),
       nu_(spec.fluid.viscosity),
       eta2_(0.01 * h * 0.01 * h),
-      rho_ref_(spec.fluid.density * spec.particles.dp * spec.particles.dp *
-               lattice_number_density(spec.particles.kernel, h, spec.particles.dp)),
+      rho_ref_(times_particle_volume<D>(spec.fluid.density, spec.particles.dp) *
+               lattice_number_density(spec.particles.kernel, h, spec.particles.dp, D)),
       neighbours_(2.0 * h, spec.scheme.neighbour_skin * 2.0 * h),
       tank_(spec.tank),
       tank_where_(spec.where("tank.shape")),
       still_depth_(spec.fill.depth),
       gravity_(spec.fluid.gravity) {
-  with_kernel(kernel_type_, h, [&](const auto& k) {
-    const double dp = dp_;
-    const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
-    lambda_full_ = 0.0;
-    for (int a = -n; a <= n; ++a)
-      for (int b = -n; b <= n; ++b) {
-        if (a == 0 && b == 0) continue;
-        const double r2 = dp * dp * (a * a + b * b);
-        lambda_full_ += laplacian_weight(dp * dp, k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
-      }
-    shifting_.w_dp = k.w(dp);
-  });
+  with_kernel(
+      kernel_type_, h,
+      [&](const auto& k) {
+        const double dp = dp_;
+        const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+        lambda_full_ = 0.0;
+        for_each_lattice_point(D, n, [&](int a, int b, int c) {
+          if (a == 0 && b == 0 && c == 0) return;
+          const double r2 = dp * dp * (a * a + b * b + c * c);
+          lambda_full_ += laplacian_weight(particle_volume<D>(dp), k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
+        });
+        shifting_.w_dp = k.w(dp);
+      },
+      D);
   // The explicit update reads the density at the step's end; the case reader refuses the pair.
   assert(!(scheme_.pressure == PressureSolve::explicit_update && scheme_.predictor == PositionPredictor::midpoint));
   shifting_.coefficient = spec.scheme.shifting_coefficient;
@@ -82,14 +113,15 @@ IsphScheme::IsphScheme(const CaseSpec& spec, double h)
   shifting_.max_shift = spec.scheme.shifting_max * dp_;
 }
 
-MemoryParts IsphData::memory_parts() const {
+template <int D>
+MemoryParts BasicIsphData<D>::memory_parts() const {
   const std::size_t n = velocity_old.capacity();
-  const std::size_t per = 4 * sizeof(Vec2) + sizeof(double) + 1 + sizeof(SymTensor2);
-  const std::size_t particle_arrays = n * per + extra_acceleration.capacity() * sizeof(Vec2);
+  const std::size_t per = 4 * sizeof(Vec<D>) + sizeof(double) + 1 + sizeof(SymTensor<D>);
+  const std::size_t particle_arrays = n * per + extra_acceleration.capacity() * sizeof(Vec<D>);
   const std::size_t ppe_vectors = ppe_row.capacity() * sizeof(int) + ppe_particle.capacity() * sizeof(std::uint32_t) +
                                   ppe_row_capacity.capacity() * sizeof(std::size_t) +
                                   (ppe_rhs.capacity() + ppe_solution.capacity()) * sizeof(double) +
-                                  ppe_row_position.capacity() * sizeof(Vec2) +
+                                  ppe_row_position.capacity() * sizeof(Vec<D>) +
                                   multigrid_rows.capacity() * sizeof(std::uint32_t);
   return {{"particle_arrays", particle_arrays},
           {"pairs", pairs.memory_bytes()},
@@ -100,13 +132,15 @@ MemoryParts IsphData::memory_parts() const {
           {"shifting", shifting.memory_bytes()}};
 }
 
-MemoryParts IsphScheme::memory_parts() const {
+template <int D>
+MemoryParts BasicIsphScheme<D>::memory_parts() const {
   MemoryParts parts = data_.memory_parts();
   parts.push_back({"neighbour_list", neighbours_.memory_bytes()});
   return parts;
 }
 
-void IsphScheme::update_neighbours(Particles& p) {
+template <int D>
+void BasicIsphScheme<D>::update_neighbours(ParticleSet& p) {
   diagnostics_.neighbours_rebuilt = false;
   if (!neighbours_.stale(p.position, p.n_fluid)) return;
   // Keep the fluid in cell order: neighbours then sit close in memory.
@@ -119,9 +153,13 @@ void IsphScheme::update_neighbours(Particles& p) {
 // next layers at 3dp/2, ...); explicit screen slats stand inside the section and are left out
 // (the fluid must pass between them). Each gets D = coefficient g max(H_w, h) (eq. 3.18,
 // physics/wall_repulsion.hpp), H_w the still-water depth above it.
-void IsphScheme::mark_repulsive_layer(const Particles& p) {
+template <int D>
+void BasicIsphScheme<D>::mark_repulsive_layer(const ParticleSet& p) {
   repulsion_strength_.assign(p.n_wall(), 0.0);
   if (!scheme_.repulsive_walls) return;
+  if constexpr (D == 3) {
+    throw std::logic_error("scheme.repulsive_walls is not available in 3D");
+  } else {
   const TankGeometry tank = make_tank(tank_, tank_where_);
   const double level = tank.y_bottom + still_depth_;
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
@@ -130,16 +168,19 @@ void IsphScheme::mark_repulsive_layer(const Particles& p) {
       repulsion_strength_[w - p.n_fluid] =
           scheme_.repulsive_coefficient * gravity_ * std::max(level - p.position[w].y, h_);
   }
+  }
 }
 
-void IsphScheme::build_pairs(const std::vector<Vec2>& position) {
+template <int D>
+void BasicIsphScheme<D>::build_pairs(const std::vector<Vec<D>>& position) {
   data_.pairs.build(kernel_type_, h_, position, neighbours_);
 }
 
-void IsphScheme::initialise(Particles& p, const FrameForce& frame) {
+template <int D>
+void BasicIsphScheme<D>::initialise(ParticleSet& p, const BasicFrameForce<D>& frame) {
   update_neighbours(p);
   data_.resize(p.size());
-  IsphData& d = data_;
+  BasicIsphData<D>& d = data_;
   for (std::size_t i = 0; i < p.size(); ++i) d.position_star[i] = p.position[i];
   build_pairs(d.position_star);
   extrapolate_wall_velocity(p, d.pairs, p.velocity);
@@ -149,11 +190,11 @@ void IsphScheme::initialise(Particles& p, const FrameForce& frame) {
   // sit dp/2 below the free surface they stand for, and carry p = 0).
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     double wsum = d.pairs.self_w();
-    d.pairs.for_each(i, [&](const Pair& q) { wsum += q.w; });
+    d.pairs.for_each(i, [&](const BasicPair<D>& q) { wsum += q.w; });
     d.free_surface[i] = p.mass * wsum < scheme_.free_surface_threshold * rho_ref_ ? 1 : 0;
     d.ppe_source[i] = 0.0;
   }
-  StepInput in;
+  Input in;
   in.frame = frame;
   solve_pressure_implicit(p, in);
 }
@@ -166,8 +207,9 @@ namespace {
 
 // Velocity gradient -> SPS stress tau/rho, thesis eqs. 2.8, 2.9 with the mixing length Cs dp
 // (physics/turbulence.hpp). Walls carry their free-slip image velocity.
-void sps_stress(const Particles& p, const PairList& pairs, double cs, double ct, double dp,
-                std::vector<SymTensor2>& tau) {
+template <int D>
+void sps_stress(const BasicParticles<D>& p, const BasicPairList<D>& pairs, double cs, double ct, double dp,
+                std::vector<SymTensor<D>>& tau) {
   const SpsClosure closure{(cs * dp) * (cs * dp), ct * dp};
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
@@ -179,27 +221,28 @@ void sps_stress(const Particles& p, const PairList& pairs, double cs, double ct,
 // Eq. 2.10: u* = u + dt (nu lap u + div(tau)/rho + body force). Laminar term eq. 2.16 with
 // rho_i = rho_j = rho0: 8 m mu / (2 rho0)^2 = 2 V nu. SPS term eq. 2.17; a wall neighbour
 // mirrors the stress of particle i (zero normal gradient of tau at the wall).
-void predict_velocity(const Particles& p, const PairList& pairs, const StepInput& in, double nu, double eta2,
-                      bool turbulence, const std::vector<double>& repulsion, double repulsion_range, IsphData& d) {
+template <int D>
+void predict_velocity(const BasicParticles<D>& p, const BasicPairList<D>& pairs, const BasicStepInput<D>& in,
+                      double nu, double eta2, bool turbulence, const std::vector<double>& repulsion,
+                      double repulsion_range, BasicIsphData<D>& d) {
   const double V = p.volume;
   const bool repulsive = !repulsion.empty();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    const Vec2 ri = p.position[i], ui = p.velocity[i];
-    const SymTensor2 ti = turbulence ? d.sps_stress[i] : SymTensor2{};
-    Vec2 a_fluid, a_wall;
-    pairs.for_each(i, [&](const Pair& q) {
+    const Vec<D> ri = p.position[i], ui = p.velocity[i];
+    const SymTensor<D> ti = turbulence ? d.sps_stress[i] : SymTensor<D>{};
+    Vec<D> a_fluid, a_wall;
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       if (q.f == 0.0) return;
       const std::size_t j = q.j;
-      const Vec2 rij = q.rij;
+      const Vec<D> rij = q.rij;
       const double F = q.f;
-      Vec2 a = (ui - p.velocity[j]) * (nu * laplacian_weight(V, F, q.r2(), eta2));
+      Vec<D> a = (ui - p.velocity[j]) * (nu * laplacian_weight(V, F, q.r2(), eta2));
       if (turbulence) {
         // A reference, not a copy: the copy of the selected 24-byte tensor went through the stack
         // and its reload stalled on store forwarding (a third of this loop's time, perf annotate).
-        const SymTensor2& tj = p.is_fluid(j) ? d.sps_stress[j] : ti;
-        const double sxx = ti.xx + tj.xx, sxy = ti.xy + tj.xy, syy = ti.yy + tj.yy;
-        a += Vec2{sxx * rij.x + sxy * rij.y, sxy * rij.x + syy * rij.y} * (V * F);
+        const SymTensor<D>& tj = p.is_fluid(j) ? d.sps_stress[j] : ti;
+        a += sum_times(ti, tj, rij) * (V * F);
       }
       if (p.is_fluid(j)) {
         a_fluid += a;
@@ -213,7 +256,7 @@ void predict_velocity(const Particles& p, const PairList& pairs, const StepInput
     });
     d.wall_acceleration[i] = a_wall;
     d.velocity_old[i] = ui;
-    const Vec2 extra = d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i];
+    const Vec<D> extra = d.extra_acceleration.empty() ? Vec<D>{} : d.extra_acceleration[i];
     d.velocity_star[i] = ui + in.dt * (a_fluid + a_wall + in.frame.at(ri, ui) + extra);
   }
 }
@@ -222,7 +265,9 @@ void predict_velocity(const Particles& p, const PairList& pairs, const StepInput
 // pressure of the step then acts at the middle of the step: see PositionPredictor); walls stay
 // where they are, and carry u*_w = u_w + dt (g - a_w) (see density_and_ppe_source), worked out
 // here once per wall particle instead of once per pair.
-void predict_position(const Particles& p, const StepInput& in, PositionPredictor predictor, IsphData& d) {
+template <int D>
+void predict_position(const BasicParticles<D>& p, const BasicStepInput<D>& in, PositionPredictor predictor,
+                      BasicIsphData<D>& d) {
   const double dt = in.dt;
   const double reach = predictor == PositionPredictor::midpoint ? 0.5 * dt : dt;
 #pragma omp parallel for schedule(static)
@@ -232,7 +277,7 @@ void predict_position(const Particles& p, const StepInput& in, PositionPredictor
       continue;
     }
     d.position_star[i] = p.position[i];
-    d.velocity_star[i] = p.velocity[i] + dt * (in.frame.at(p.position[i], Vec2{}) - p.wall_acceleration(i));
+    d.velocity_star[i] = p.velocity[i] + dt * (in.frame.at(p.position[i], Vec<D>{}) - p.wall_acceleration(i));
   }
 }
 
@@ -263,14 +308,15 @@ double blending_factor(const SchemeSpec& scheme, double dt) {
 //    the body-force increment the fluid received (less the wall's own acceleration for a moving
 //    wall). The wall pressure of eq. 2.19 already
 //    imposes dp/dn = rho (g - a).n; with u*_w = 0 the source would impose it a second time.
-void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput& in, double alpha, double rho_ref,
-                            double threshold, IsphData& d) {
+template <int D>
+void density_and_ppe_source(BasicParticles<D>& p, const BasicPairList<D>& pairs, const BasicStepInput<D>& in,
+                            double alpha, double rho_ref, double threshold, BasicIsphData<D>& d) {
   const double V = p.volume, m = p.mass, w0 = pairs.self_w(), dt = in.dt;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    const Vec2 ui = d.velocity_star[i];
+    const Vec<D> ui = d.velocity_star[i];
     double wsum = w0, wall_sum = 0.0, div = 0.0;
-    pairs.for_each(i, [&](const Pair& q) {
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       const std::size_t j = q.j;
       wsum += q.w;
       if (!p.is_fluid(j)) wall_sum += q.w;
@@ -287,21 +333,23 @@ void density_and_ppe_source(Particles& p, const PairList& pairs, const StepInput
 //   -grad(p)_i / rho0 = -(1/rho0) sum_j V (p_i + p_j) grad_i W_ij,
 // then eq. 2.15 for the position. Pressure forces of wall neighbours are kept apart for
 // the base shear.
-void correct_and_advance(Particles& p, const PairList& pairs, double dt, double rho0, IsphData& d) {
+template <int D>
+void correct_and_advance(BasicParticles<D>& p, const BasicPairList<D>& pairs, double dt, double rho0,
+                         BasicIsphData<D>& d) {
   const double c = p.volume / rho0;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    const Vec2 ri = d.position_star[i];
+    const Vec<D> ri = d.position_star[i];
     const double pi = p.pressure[i];
-    Vec2 a_fluid, a_wall;
-    pairs.for_each(i, [&](const Pair& q) {
+    Vec<D> a_fluid, a_wall;
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       const std::size_t j = q.j;
       const double pj = p.is_fluid(j) ? p.pressure[j] : wall_pressure_seen_from(p, j, ri);
-      const Vec2 a = q.rij * (-c * (pi + pj) * q.f);
+      const Vec<D> a = q.rij * (-c * (pi + pj) * q.f);
       if (p.is_fluid(j)) a_fluid += a;
       else a_wall += a;
     });
-    const Vec2 u_new = d.velocity_star[i] + dt * (a_fluid + a_wall);
+    const Vec<D> u_new = d.velocity_star[i] + dt * (a_fluid + a_wall);
     d.wall_acceleration[i] += a_wall;
     p.position[i] += 0.5 * dt * (d.velocity_old[i] + u_new);
     p.velocity[i] = u_new;
@@ -312,7 +360,9 @@ void correct_and_advance(Particles& p, const PairList& pairs, double dt, double 
 // D = A h |u_i| dt), with the pairs at r*, which the step's last motion moved by
 // dt (u(t+dt) - u*)/2, a small fraction of dp, and the free-surface flags of stage 5 (1: surface,
 // 2: spray). Returns how many shifts were cut.
-std::size_t shift_particles(Particles& p, const PairList& pairs, const ShiftingRule& rule, double dt, IsphData& d) {
+template <int D>
+std::size_t shift_particles(BasicParticles<D>& p, const BasicPairList<D>& pairs, const ShiftingRule& rule, double dt,
+                            BasicIsphData<D>& d) {
   const double scale = rule.coefficient * rule.h * dt;
   return shift_fluid(p, pairs, d.free_surface, rule, [&](std::size_t i) { return scale * norm(p.velocity[i]); },
                      nullptr, d.shifting);
@@ -326,18 +376,20 @@ std::size_t shift_particles(Particles& p, const PairList& pairs, const ShiftingR
 // its surface, can be given tensions of megapascals that tear it apart (measured: -5 MPa and
 // 22 m/s, Tait tank without screens at X0/L = 0.016). Clipping lets such a blob separate
 // instead, the way a real free surface forms.
-double IsphScheme::clip(double pressure) const {
+template <int D>
+double BasicIsphScheme<D>::clip(double pressure) const {
   return scheme_.clip_negative_pressure ? std::max(pressure, 0.0) : pressure;
 }
 
-void IsphScheme::solve_pressure_explicit(Particles& p, const StepInput& in) {
+template <int D>
+void BasicIsphScheme<D>::solve_pressure_explicit(ParticleSet& p, const Input& in) {
   // Eq. 2.18 (Yeylaghi et al. 2016): one Jacobi sweep of the discrete PPE per step from
   // the previous pressures, p_i = (b_i + sum_j lambda_ij p_j) / sum_j lambda_ij, with
   // lambda_ij = (2 V / rho0) F_ij r^2 / (r^2 + eta^2) (eq. 2.5 with rho_i = rho_j).
   const double eta2 = eta2_;
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   const std::uint8_t zero_from = dirichlet ? 1 : 2;  // flags with p = 0
-  IsphData& d = data_;
+  BasicIsphData<D>& d = data_;
   std::vector<double>& next = d.ppe_source;  // overwritten in place: b_i is read once per i
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
@@ -345,9 +397,9 @@ void IsphScheme::solve_pressure_explicit(Particles& p, const StepInput& in) {
       next[i] = 0.0;
       continue;
     }
-    const Vec2 ri = d.position_star[i];
+    const Vec<D> ri = d.position_star[i];
     double diag = 0.0, off = 0.0;
-    d.pairs.for_each(i, [&](const Pair& q) {
+    d.pairs.for_each(i, [&](const BasicPair<D>& q) {
       const std::size_t j = q.j;
       const double lambda = laplacian_weight(p.volume, q.f, q.r2(), eta2) / rho0_;
       diag += lambda;
@@ -373,7 +425,8 @@ namespace {
 
 enum class PpeNeighbour { ignored, back_pressure, coefficient };
 
-PpeNeighbour ppe_neighbour(const Particles& p, std::size_t i, std::size_t j, Vec2 ri, Vec2 rij) {
+template <int D>
+PpeNeighbour ppe_neighbour(const BasicParticles<D>& p, std::size_t i, std::size_t j, Vec<D> ri, Vec<D> rij) {
   if (!p.is_fluid(i)) return dot(rij, p.normal[i]) > 0.0 ? PpeNeighbour::ignored : PpeNeighbour::coefficient;
   if (!p.is_fluid(j) && dot(ri - p.position[j], p.normal[j]) < 0.0) return PpeNeighbour::back_pressure;
   return PpeNeighbour::coefficient;
@@ -384,17 +437,18 @@ PpeNeighbour ppe_neighbour(const Particles& p, std::size_t i, std::size_t j, Vec
 // One row of the implicit PPE (see solve_pressure_implicit) into its reserved slots, the diagonal
 // first; entries of zero weight (neighbours of the Verlet skin beyond the kernel's support) are
 // left out. Returns the right side of the row.
-double IsphScheme::assemble_ppe_row(const Particles& p, const StepInput& in, std::size_t i, std::size_t row) {
-  IsphData& d = data_;
+template <int D>
+double BasicIsphScheme<D>::assemble_ppe_row(const ParticleSet& p, const Input& in, std::size_t i, std::size_t row) {
+  BasicIsphData<D>& d = data_;
   SparseRows& A = d.ppe_matrix;
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
-  const Vec2 ri = d.position_star[i];
+  const Vec<D> ri = d.position_star[i];
   std::size_t slot = A.slot_begin[row] + 1;
   double diag = 0.0;
   double rhs = p.is_fluid(i) ? d.ppe_source[i] : 0.0;
   // A wall row's g - a_w (moving walls), once per row rather than once per pair.
-  const Vec2 wall_body_force = p.is_fluid(i) ? Vec2{} : in.frame.at(ri, Vec2{}) - p.wall_acceleration(i);
-  d.pairs.for_each(i, [&](const Pair& q) {
+  const Vec<D> wall_body_force = p.is_fluid(i) ? Vec<D>{} : in.frame.at(ri, Vec<D>{}) - p.wall_acceleration(i);
+  d.pairs.for_each(i, [&](const BasicPair<D>& q) {
     const std::size_t j = q.j;
     const PpeNeighbour kind = ppe_neighbour(p, i, j, ri, q.rij);
     if (kind == PpeNeighbour::ignored) return;
@@ -426,8 +480,9 @@ double IsphScheme::assemble_ppe_row(const Particles& p, const StepInput& in, std
   return rhs;
 }
 
-KrylovReport IsphScheme::solve_ppe_system(bool multigrid) {
-  IsphData& d = data_;
+template <int D>
+KrylovReport BasicIsphScheme<D>::solve_ppe_system(bool multigrid) {
+  BasicIsphData<D>& d = data_;
   return solve_bicgstab(d.ppe_matrix, d.ppe_rhs, d.ppe_solution, scheme_.solver_tolerance,
                         scheme_.solver_max_iterations, d.krylov, multigrid ? &d.multigrid : nullptr);
 }
@@ -443,16 +498,18 @@ constexpr std::uint32_t kMultigridKeptSteps = 20;
 
 // The hierarchy of the last build may precondition this step's system: it was built for the same
 // rows (the same particles in the same order, the neighbour list not rebuilt since) and is young.
-bool IsphScheme::can_keep_multigrid() const {
-  const IsphData& d = data_;
+template <int D>
+bool BasicIsphScheme<D>::can_keep_multigrid() const {
+  const BasicIsphData<D>& d = data_;
   return d.multigrid.ready && d.multigrid_neighbour_builds == neighbours_.builds() &&
          d.multigrid_age < kMultigridKeptSteps && d.multigrid_rows == d.ppe_particle;
 }
 
 // The assembled system solved with its preconditioner: the multigrid built for it first, or kept
 // from an earlier step (keep_hierarchy, which the caller sets from can_keep_multigrid).
-KrylovReport IsphScheme::solve_assembled_ppe(bool multigrid, bool keep_hierarchy) {
-  IsphData& d = data_;
+template <int D>
+KrylovReport BasicIsphScheme<D>::solve_assembled_ppe(bool multigrid, bool keep_hierarchy) {
+  BasicIsphData<D>& d = data_;
   if (multigrid && keep_hierarchy) {
     refresh_fine_diagonal(d.ppe_matrix, d.multigrid);
     ++d.multigrid_age;
@@ -468,7 +525,8 @@ KrylovReport IsphScheme::solve_assembled_ppe(bool multigrid, bool keep_hierarchy
   return solve_ppe_system(multigrid);
 }
 
-void IsphScheme::save_state(StateWriter& w) const {
+template <int D>
+void BasicIsphScheme<D>::save_state(StateWriter& w) const {
   neighbours_.save(w);
   save_multigrid(data_.multigrid, w);
   w.array("isph.multigrid_rows", data_.multigrid_rows);
@@ -476,7 +534,8 @@ void IsphScheme::save_state(StateWriter& w) const {
   w.value("isph.multigrid_age", data_.multigrid_age);
 }
 
-void IsphScheme::load_state(StateReader& r) {
+template <int D>
+void BasicIsphScheme<D>::load_state(StateReader& r) {
   neighbours_.load(r);
   load_multigrid(data_.multigrid, r);
   data_.multigrid_rows = r.array<std::uint32_t>("isph.multigrid_rows");
@@ -486,8 +545,9 @@ void IsphScheme::load_state(StateReader& r) {
 
 // The unknowns of the implicit PPE (fluid not at p = 0, walls with neighbours) and their rows,
 // written in parallel into slots reserved per row; the solution starts from p(t).
-void IsphScheme::assemble_ppe(const Particles& p, const StepInput& in) {
-  IsphData& d = data_;
+template <int D>
+void BasicIsphScheme<D>::assemble_ppe(const ParticleSet& p, const Input& in) {
+  BasicIsphData<D>& d = data_;
   const std::size_t n = p.size();
   const bool dirichlet = scheme_.free_surface == FreeSurfaceModel::thesis;
   const std::uint8_t zero_from = dirichlet ? 1 : 2;  // flags with p = 0
@@ -519,8 +579,9 @@ void IsphScheme::assemble_ppe(const Particles& p, const StepInput& in) {
 
 // The fluid particles of the PPE's blocks that no p = 0 condition reaches (rows_without_anchor)
 // become spray (flag 2: p = 0, not unknowns) for this step. Returns how many.
-std::size_t IsphScheme::pin_unanchored_blocks(const Particles& p) {
-  IsphData& d = data_;
+template <int D>
+std::size_t BasicIsphScheme<D>::pin_unanchored_blocks(const ParticleSet& p) {
+  BasicIsphData<D>& d = data_;
   std::size_t pinned = 0;
   for (const std::uint32_t row : rows_without_anchor(d.ppe_matrix)) {
     const std::size_t i = d.ppe_particle[row];
@@ -531,13 +592,14 @@ std::size_t IsphScheme::pin_unanchored_blocks(const Particles& p) {
   return pinned;
 }
 
-void IsphScheme::solve_pressure_implicit(Particles& p, const StepInput& in) {
+template <int D>
+void BasicIsphScheme<D>::solve_pressure_implicit(ParticleSet& p, const Input& in) {
   // The same discrete equations as the explicit update, solved exactly each step:
   // fluid rows  sum_j lambda_ij (p_i - p_j) = b_i        (free-surface p = 0),
   // wall rows   sum_f W_wf p_w - sum_f W_wf p_f = (g - a)·sum_f rho0 r_wf W_wf   (eq. 2.19).
   // Non-symmetric, so BiCGSTAB (schemes/ppe_solver.hpp) with a diagonal or multigrid
   // preconditioner (scheme.preconditioner), warm-started from p(t).
-  IsphData& d = data_;
+  BasicIsphData<D>& d = data_;
   diagnostics_.pinned_particles = 0;
   assemble_ppe(p, in);
   const bool multigrid = scheme_.preconditioner == Preconditioner::multigrid;
@@ -589,13 +651,15 @@ void IsphScheme::solve_pressure_implicit(Particles& p, const StepInput& in) {
 }
 
 // The pairs each stage reads: those at r(t) before the prediction, at r* from the density on.
-bool IsphScheme::reads_pairs_at_r_star(IsphStage stage) {
+template <int D>
+bool BasicIsphScheme<D>::reads_pairs_at_r_star(IsphStage stage) {
   return stage == IsphStage::density_and_ppe_source || stage == IsphStage::pressure_solve ||
          stage == IsphStage::correct_and_advance || stage == IsphStage::shift;
 }
 
-void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
-  IsphData& d = data_;
+template <int D>
+void BasicIsphScheme<D>::stage(IsphStage stage, ParticleSet& p, const Input& in) {
+  BasicIsphData<D>& d = data_;
   switch (stage) {
     case IsphStage::sps_stress:
       sps_stress(p, d.pairs, scheme_.smagorinsky, scheme_.ct, dp_, d.sps_stress);
@@ -624,20 +688,23 @@ void IsphScheme::stage(IsphStage stage, Particles& p, const StepInput& in) {
   }
 }
 
-void IsphScheme::prepare_stage(IsphStage stage, const Particles& p) {
+template <int D>
+void BasicIsphScheme<D>::prepare_stage(IsphStage stage, const ParticleSet& p) {
   data_.resize(p.size());
   build_pairs(reads_pairs_at_r_star(stage) ? data_.position_star : p.position);
 }
 
-void IsphScheme::run_stage(IsphStage stage, Particles& p, const StepInput& in) {
+template <int D>
+void BasicIsphScheme<D>::run_stage(IsphStage stage, ParticleSet& p, const Input& in) {
   assert(data_.pairs.rows() == p.size() && "prepare_stage first");
   this->stage(stage, p, in);
 }
 
-void IsphScheme::step(Particles& p, const StepInput& in) {
+template <int D>
+void BasicIsphScheme<D>::step(ParticleSet& p, const Input& in) {
   update_neighbours(p);
   data_.resize(p.size());
-  IsphData& d = data_;
+  BasicIsphData<D>& d = data_;
   d.extra_acceleration.clear();
   if (in.extra) in.extra(p, d.extra_acceleration);                  // screens, eq. 2.28
   build_pairs(p.position);                                          // the pairs at r(t)
@@ -652,7 +719,7 @@ void IsphScheme::step(Particles& p, const StepInput& in) {
   if (scheme_.shifting == ShiftingModel::lind) stage(IsphStage::shift, p, in);  // Lind et al. 2012
 
   // Diagnostics, reduced in a fixed order so they do not depend on the thread count.
-  Vec2 wall{};
+  Vec<D> wall{};
   double vmax2 = 0.0;
   std::size_t surface = 0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
@@ -664,5 +731,11 @@ void IsphScheme::step(Particles& p, const StepInput& in) {
   diagnostics_.max_speed = std::sqrt(vmax2);
   diagnostics_.free_surface = surface;
 }
+
+// The two dimensions.
+template struct BasicIsphData<2>;
+template struct BasicIsphData<3>;
+template class BasicIsphScheme<2>;
+template class BasicIsphScheme<3>;
 
 }  // namespace sloshsph

@@ -22,15 +22,16 @@
 
 namespace sloshsph {
 
-struct IsphData {
-  std::vector<Vec2> velocity_old;    // u(t)
-  std::vector<Vec2> velocity_star;   // u*, eq. 2.10
-  std::vector<Vec2> position_star;   // r*, eq. 2.11 (walls: their fixed position)
+template <int D>
+struct BasicIsphData {
+  std::vector<Vec<D>> velocity_old;    // u(t)
+  std::vector<Vec<D>> velocity_star;   // u*, eq. 2.10
+  std::vector<Vec<D>> position_star;   // r*, eq. 2.11 (walls: their fixed position)
   std::vector<double> ppe_source;    // right-hand side of eq. 2.13, 1/s^2
   std::vector<std::uint8_t> free_surface;  // eq. 2.20
-  std::vector<SymTensor2> sps_stress;      // tau / rho, eq. 2.8, m^2/s^2
-  std::vector<Vec2> wall_acceleration;     // acceleration of each fluid particle due to wall particles
-  std::vector<Vec2> extra_acceleration;    // driver-supplied (screens), psi_sc of eq. 2.10
+  std::vector<SymTensor<D>> sps_stress;    // tau / rho, eq. 2.8, m^2/s^2
+  std::vector<Vec<D>> wall_acceleration;   // acceleration of each fluid particle due to wall particles
+  std::vector<Vec<D>> extra_acceleration;  // driver-supplied (screens), psi_sc of eq. 2.10
   // The implicit PPE: unknown row of each particle (-1: known pressure), the particle of each
   // row, the matrix, right side, solution and the Krylov scratch vectors (kept between steps).
   std::vector<int> ppe_row;
@@ -40,7 +41,7 @@ struct IsphData {
   std::vector<double> ppe_rhs, ppe_solution;
   BicgstabWork krylov;
   Multigrid multigrid;
-  std::vector<Vec2> ppe_row_position;  // r* of each row's particle (multigrid aggregates)
+  std::vector<Vec<D>> ppe_row_position;  // r* of each row's particle (multigrid aggregates)
   // The hierarchy is kept from step to step while the PPE has the same rows (the same particles in
   // the same order: no neighbour-list rebuild, which reorders them) for at most
   // kMultigridKeptSteps steps (IsphScheme::solve_assembled_ppe).
@@ -49,34 +50,43 @@ struct IsphData {
   std::uint32_t multigrid_age = 0;            // steps that have used it since
   // The pairs within the kernel's support, built at r(t) at the start of a step and again at r*
   // after the prediction (sph/pairs.hpp).
-  PairList pairs;
-  ShiftingWork shifting;  // scheme.shifting (physics/shifting.hpp)
+  BasicPairList<D> pairs;
+  BasicShiftingWork<D> shifting;  // scheme.shifting (physics/shifting.hpp)
   void resize(std::size_t n);
   MemoryParts memory_parts() const;  // without the neighbour list, which the scheme owns
 };
+using IsphData = BasicIsphData<2>;
 
 // The stages of IsphScheme::step after the wall velocities, in their order.
 enum class IsphStage { sps_stress, predict, density_and_ppe_source, pressure_solve, correct_and_advance, shift };
 
-class IsphScheme {
+// In 2 or 3 dimensions (IsphScheme is the 2D one, IsphScheme3 the 3D one; instantiated for both in
+// isph.cpp). In 3D the particles, tank and case come from the caller (no case reads a 3D tank
+// yet), and the repulsive walls of thesis eq. 3.18 are not available.
+template <int D>
+class BasicIsphScheme {
  public:
-  IsphScheme(const CaseSpec& spec, double h);
+  using ParticleSet = BasicParticles<D>;
+  using Input = BasicStepInput<D>;
+  using Diagnostics = BasicStepDiagnostics<D>;
+
+  BasicIsphScheme(const CaseSpec& spec, double h);
 
   // One time step of thesis Figure 2.1; particles are advanced in place.
-  void step(Particles& particles, const StepInput& input);
+  void step(ParticleSet& particles, const Input& input);
 
   // Before the first step: free-slip wall velocities, and the pressure (fluid and walls) that
   // holds the fluid at rest as it is placed, from one solve of the discrete PPE.
-  void initialise(Particles& particles, const FrameForce& frame);
+  void initialise(ParticleSet& particles, const BasicFrameForce<D>& frame);
 
   // One stage alone on `particles`, with the solver data the last step left (the stage
   // benchmarks, bench/bench_stages.cpp); step() is these in order. prepare_stage builds the pairs
   // the stage reads (at r(t) of `particles`, or at the r* the last step left) and must come first.
-  void prepare_stage(IsphStage stage, const Particles& particles);
-  void run_stage(IsphStage stage, Particles& particles, const StepInput& input);
+  void prepare_stage(IsphStage stage, const ParticleSet& particles);
+  void run_stage(IsphStage stage, ParticleSet& particles, const Input& input);
 
-  const StepDiagnostics& diagnostics() const { return diagnostics_; }
-  const NeighbourList& neighbours() const { return neighbours_; }
+  const Diagnostics& diagnostics() const { return diagnostics_; }
+  const BasicNeighbourList<D>& neighbours() const { return neighbours_; }
   double reference_density() const { return rho_ref_; }
   double h() const { return h_; }
   // Checkpoints: besides the particles, ISPH keeps its neighbour list and the multigrid hierarchy
@@ -86,20 +96,20 @@ class IsphScheme {
   MemoryParts memory_parts() const;
 
  private:
-  void build_pairs(const std::vector<Vec2>& position);
+  void build_pairs(const std::vector<Vec<D>>& position);
   static bool reads_pairs_at_r_star(IsphStage stage);
-  void stage(IsphStage stage, Particles& p, const StepInput& in);
-  void solve_pressure_explicit(Particles& p, const StepInput& in);
-  void solve_pressure_implicit(Particles& p, const StepInput& in);
-  void assemble_ppe(const Particles& p, const StepInput& in);
-  std::size_t pin_unanchored_blocks(const Particles& p);
-  double assemble_ppe_row(const Particles& p, const StepInput& in, std::size_t i, std::size_t row);
+  void stage(IsphStage stage, ParticleSet& p, const Input& in);
+  void solve_pressure_explicit(ParticleSet& p, const Input& in);
+  void solve_pressure_implicit(ParticleSet& p, const Input& in);
+  void assemble_ppe(const ParticleSet& p, const Input& in);
+  std::size_t pin_unanchored_blocks(const ParticleSet& p);
+  double assemble_ppe_row(const ParticleSet& p, const Input& in, std::size_t i, std::size_t row);
   KrylovReport solve_ppe_system(bool multigrid);
   KrylovReport solve_assembled_ppe(bool multigrid, bool keep_hierarchy);
   bool can_keep_multigrid() const;
-  void update_neighbours(Particles& p);
+  void update_neighbours(ParticleSet& p);
   double clip(double pressure) const;
-  void mark_repulsive_layer(const Particles& p);
+  void mark_repulsive_layer(const ParticleSet& p);
 
   SchemeSpec scheme_;
   KernelType kernel_type_;
@@ -110,7 +120,7 @@ class IsphScheme {
   double eta2_;     // (0.01 h)^2, eqs. 2.5 and 2.16
   double rho_ref_;  // kernel sum of a full lattice: the density of the undisturbed fluid
   double lambda_full_ = 0.0;  // sum of the Laplacian pair weights over a full lattice (air model)
-  NeighbourList neighbours_;
+  BasicNeighbourList<D> neighbours_;
   // scheme.repulsive_walls (thesis eq. 3.18): strength D = coefficient g max(H_w, h) of each
   // wall particle (index w - n_fluid), 0 for those not in the first layer of the tank walls.
   TankSpec tank_;
@@ -119,13 +129,16 @@ class IsphScheme {
   double gravity_ = 0.0;
   std::vector<double> repulsion_strength_;
   ShiftingRule shifting_;  // scheme.shifting = "lind"
-  IsphData data_;
-  StepDiagnostics diagnostics_;
+  BasicIsphData<D> data_;
+  Diagnostics diagnostics_;
 };
 
-// Kernel sum m * sum_j W(r_ij) of an interior particle of a square lattice of spacing dp,
-// divided by the particle mass: the number density of undisturbed fluid (about 1/dp^2).
-double lattice_number_density(KernelType type, double h, double dp);
+using IsphScheme = BasicIsphScheme<2>;
+using IsphScheme3 = BasicIsphScheme<3>;
+
+// Kernel sum m * sum_j W(r_ij) of an interior particle of a square (cubic) lattice of spacing dp,
+// divided by the particle mass: the number density of undisturbed fluid (about 1/dp^2, 1/dp^3).
+double lattice_number_density(KernelType type, double h, double dp, int dimensions = 2);
 
 // The free-surface flag of a fluid particle from its kernel sums, in any one unit (densities or
 // concentrations): `fluid_sum` and `wall_sum` the shares of fluid and wall neighbours, `total` the

@@ -1,5 +1,5 @@
 #pragma once
-// What every scheme's step() takes and reports (ISPH, WCSPH).
+// What every scheme's step() takes and reports (ISPH, WCSPH), in 2 or 3 dimensions.
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -14,16 +14,21 @@ namespace sloshsph {
 // Fills `acceleration` (one entry per fluid particle, m/s^2) with forces the driver adds to
 // the momentum equation, e.g. the porous drag of screens (thesis eq. 2.28). The scheme calls it
 // at the start of a step, after any reordering of the particles, with the state u(t).
-using ExtraAcceleration = std::function<void(const Particles&, std::vector<Vec2>& acceleration)>;
+template <int D>
+using BasicExtraAcceleration = std::function<void(const BasicParticles<D>&, std::vector<Vec<D>>& acceleration)>;
+using ExtraAcceleration = BasicExtraAcceleration<2>;
 
-struct StepInput {
-  double dt = 0.0;    // s
-  FrameForce frame;   // gravity and frame forces in the tank frame
-  ExtraAcceleration extra;  // optional
+template <int D>
+struct BasicStepInput {
+  double dt = 0.0;            // s
+  BasicFrameForce<D> frame;   // gravity and frame forces in the tank frame
+  BasicExtraAcceleration<D> extra;  // optional
 };
+using StepInput = BasicStepInput<2>;
 
-struct StepDiagnostics {
-  Vec2 wall_force;               // N/m: total force of the walls on the fluid (base shear, thesis eq. 4.21)
+template <int D>
+struct BasicStepDiagnostics {
+  Vec<D> wall_force;             // N/m (N in 3D): total force of the walls on the fluid (base shear, thesis eq. 4.21)
   double max_speed = 0.0;        // m/s, fluid, after the step
   std::size_t free_surface = 0;  // particles flagged free surface this step
   int solver_iterations = 0;     // implicit PPE (explicit: sweeps)
@@ -32,6 +37,7 @@ struct StepDiagnostics {
   bool neighbours_rebuilt = false;
   std::size_t shifts_limited = 0;    // scheme.shifting: shifts cut by the length cap or a wall
 };
+using StepDiagnostics = BasicStepDiagnostics<2>;
 
 // The memory of a scheme's arrays by part (their capacity, bytes): summary.json's
 // memory_bytes_per_particle and its breakdown memory_bytes_per_particle_by_part.

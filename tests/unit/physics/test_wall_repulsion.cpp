@@ -16,11 +16,11 @@ constexpr double kRange = 0.7 * 0.005;     // r0 = h/2, h = 1.4 dp, dp = 5 mm
 TEST(WallRepulsion, ZeroBeyondRange) {
   for (double r : {kRange, 1.0001 * kRange, 1.5 * kRange, 10.0 * kRange})
     for (double a : {0.0, 0.7, 2.0, 4.0}) {
-      const Vec2 f = thesis_wall_repulsion({r * std::cos(a), r * std::sin(a)}, kStrength, kRange);
+      const Vec2 f = thesis_wall_repulsion(Vec2{r * std::cos(a), r * std::sin(a)}, kStrength, kRange);
       EXPECT_EQ(f.x, 0.0);
       EXPECT_EQ(f.y, 0.0);
     }
-  const Vec2 f0 = thesis_wall_repulsion({0.0, 0.0}, kStrength, kRange);
+  const Vec2 f0 = thesis_wall_repulsion(Vec2{0.0, 0.0}, kStrength, kRange);
   EXPECT_EQ(norm(f0), 0.0);
 }
 
@@ -43,14 +43,14 @@ TEST(WallRepulsion, RepulsiveAndBoundedInside) {
     else EXPECT_LE(m, previous * (1.0 + 1e-12)) << "r = " << r;
     previous = m;
   }
-  const Vec2 edge = thesis_wall_repulsion({0.0, (1.0 - 1e-5) * kRange}, kStrength, kRange);
+  const Vec2 edge = thesis_wall_repulsion(Vec2{0.0, (1.0 - 1e-5) * kRange}, kStrength, kRange);
   EXPECT_LT(norm(edge), 1e-3 * bound);
 }
 
 // The Lennard-Jones bracket of eq. 3.18: at r = 0.8 r0, D [(1/0.8)^4 - (1/0.8)^2] / r.
 TEST(WallRepulsion, MatchesTheLennardJonesForm) {
   const double r = 0.8 * kRange, q = 1.0 / 0.8;
-  const Vec2 f = thesis_wall_repulsion({r, 0.0}, kStrength, kRange);
+  const Vec2 f = thesis_wall_repulsion(Vec2{r, 0.0}, kStrength, kRange);
   EXPECT_NEAR(f.x, kStrength * (std::pow(q, 4) - q * q) / r, 1e-9 * f.x);
   EXPECT_EQ(f.y, 0.0);
 }
