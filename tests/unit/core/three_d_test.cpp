@@ -17,6 +17,7 @@
 #include "sloshsph/sph/neighbours.hpp"
 #include "sloshsph/sph/operators.hpp"
 #include "sloshsph/sph/pairs.hpp"
+#include "neighbour_checks.hpp"
 
 namespace sloshsph {
 namespace {
@@ -55,33 +56,12 @@ TEST(ThreeD, TwoDimensionalNormalisationUnchanged) {
 }
 
 std::vector<Vec3> random_points(std::size_t n, unsigned seed, double size) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, size);
-  std::vector<Vec3> p(n);
-  for (auto& q : p) q = {u(rng), u(rng), u(rng)};
-  return p;
+  return testing::random_points<3>(n, seed, size);
 }
 
 TEST(ThreeD, NeighbourListEqualsBruteForce) {
-  // Reference: all pairs closer than the search radius, by brute force; fluid rows list fluid
-  // and walls, wall rows fluid only. Exactly equal, no duplicates.
-  const auto pts = random_points(3000, 5, 0.5);
-  const std::size_t n_fluid = 2000;
-  NeighbourList3 nl(0.04, 0.01);
-  nl.build(pts, n_fluid);
-  const double r2 = 0.05 * 0.05;
-  std::size_t total = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    std::set<std::uint32_t> expected;
-    for (std::size_t j = 0; j < pts.size(); ++j) {
-      if (j == i || (i >= n_fluid && j >= n_fluid)) continue;
-      if (norm2(pts[i] - pts[j]) < r2) expected.insert(static_cast<std::uint32_t>(j));
-    }
-    const std::set<std::uint32_t> got(nl.begin(i), nl.end(i));
-    ASSERT_EQ(got, expected) << "particle " << i;
-    ASSERT_EQ(nl.count(i), expected.size()) << "duplicates in row " << i;
-    total += expected.size();
-  }
+  // Reference: all pairs closer than the search radius, by brute force (neighbour_checks.hpp).
+  const std::size_t total = testing::expect_list_equals_brute_force(random_points(3000, 5, 0.5), 2000, 0.04, 0.01);
   // Not a vacuous check: 3000 points in 0.125 m^3 give about 1.5 neighbours each within 0.05 m.
   EXPECT_GT(total, 2000u);
 }
