@@ -12,6 +12,7 @@
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/geometry/prism_tank.hpp"
 #include "sloshsph/schemes/isph.hpp"
+#include "three_d_support.hpp"
 #include "validation_check.hpp"
 
 namespace sloshsph {
@@ -32,31 +33,10 @@ using testing::report;
 // fluid equal to its weight within 0.5%. The layers nearer the surface are reported, not checked.
 TEST(Validation, HydrostaticBoxInThreeDimensions) {
   const double rho = 1000.0, g = 9.81, H = 0.2, dp = 0.02, dt = 0.002, duration = 2.0;
-  CaseSpec spec;
-  spec.fluid.density = rho;
-  spec.fluid.gravity = g;
-  spec.particles.dp = dp;
-  spec.fill.depth = H;
-  spec.tank.shape = "rectangle";
-  spec.tank.length = 0.3;
-  spec.tank.height = 0.4;
+  const CaseSpec spec = testing::box_case(0.3, 0.4, H, dp);
   const PrismTank tank{make_tank(spec.tank, "test"), 0.2};
-
-  Particles3 p;
-  const std::vector<Vec3> fluid = fill_fluid(tank, dp, H);
-  const std::vector<WallSample3> walls = sample_walls(tank, dp, spec.particles.wall_layers);
-  p.resize(fluid.size() + walls.size());
-  p.n_fluid = fluid.size();
-  p.volume = dp * dp * dp;
-  p.mass = rho * p.volume;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool is_fluid = i < fluid.size();
-    p.position[i] = is_fluid ? fluid[i] : walls[i - fluid.size()].position;
-    if (!is_fluid) p.normal[i] = walls[i - fluid.size()].normal;
-    p.pressure[i] = rho * g * std::max(0.0, H - p.position[i].z);
-    p.density[i] = rho;
-    p.id[i] = static_cast<std::int32_t>(i);
-  }
+  Particles3 p = testing::particles_at_rest(spec, tank);
+  const std::vector<Vec3> fluid = fill_fluid(tank, dp, H);  // where each particle started (by id)
   ASSERT_EQ(p.n_fluid, 1500u);
   ASSERT_EQ(p.n_wall(), 2852u);
 
