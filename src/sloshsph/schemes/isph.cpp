@@ -39,8 +39,10 @@ std::uint8_t free_surface_flag(double fluid_sum, double wall_sum, double total, 
   return fluid_fraction < kSplashFraction ? 2 : total < threshold * full ? 1 : 0;
 }
 
-// Calls f(r^2 / dp^2) for every point of the square (dimensions 2) or cubic (3) lattice of unit
-// spacing within n steps of the origin along each axis, in one fixed order.
+namespace {
+
+// Calls f(a, b, c) for every point (a, b, c) of the square (dimensions 2, c = 0) or cubic (3)
+// integer lattice within n steps of the origin along each axis, in one fixed order (c, a, b).
 template <class F>
 void for_each_lattice_point(int dimensions, int n, F&& f) {
   const int nc = dimensions == 3 ? n : 0;
@@ -61,6 +63,8 @@ double times_particle_volume(double x, double dp) {
   if constexpr (D == 2) return x * dp * dp;
   else return x * dp * dp * dp;
 }
+
+}  // namespace
 
 double lattice_number_density(KernelType type, double h, double dp, int dimensions) {
   return with_kernel(
