@@ -13,6 +13,7 @@
 
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/physics/frame.hpp"
+#include "sloshsph/physics/turbulence.hpp"
 #include "sloshsph/sph/kernel.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 #include "sloshsph/sph/operators.hpp"
@@ -270,6 +271,39 @@ TEST(ThreeD, FrameForceAboutTheVerticalIsThePlaneOne) {
   const Vec3 c = roll.at({0.0, 0.0, 0.5}, {});
   EXPECT_NEAR(c.z, 4.0 * 0.5, 1e-12);
   EXPECT_NEAR(c.y, 0.0, 1e-12);
+}
+
+TEST(ThreeD, SpsClosureOfAPlaneFlowIsThePlaneOne) {
+  // Reference: the 2D closure (thesis eqs. 2.8-2.9) of the same velocity gradient. A flow in the
+  // x-y plane has |S| and the in-plane stresses of the 2D closure, no stress out of the plane but
+  // the isotropic -2/3 k_t; the stress divergence's pair term (tau_i + tau_j) r_ij likewise.
+  // To round-off (1e-12 of the largest term).
+  VelocityGradient g2;
+  g2.c[0][0] = 0.8;
+  g2.c[0][1] = -1.7;
+  g2.c[1][0] = 0.4;
+  g2.c[1][1] = -0.8;
+  BasicVelocityGradient<3> g3;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) g3.c[a][b] = g2.c[a][b];
+  const SpsClosure closure{1e-4, 0.08 * 0.01};
+  double nu2 = 0.0, nu3 = 0.0;
+  const SymTensor2 t2 = sps_stress_of(g2, closure, nu2);
+  const SymTensor3 t3 = sps_stress_of(g3, closure, nu3);
+  EXPECT_NEAR(nu3, nu2, 1e-15);
+  EXPECT_NEAR(t3.xx, t2.xx, 1e-12);
+  EXPECT_NEAR(t3.xy, t2.xy, 1e-12);
+  EXPECT_NEAR(t3.yy, t2.yy, 1e-12);
+  EXPECT_EQ(t3.xz, 0.0);
+  EXPECT_EQ(t3.yz, 0.0);
+  const double kt = (nu2 / closure.ct_dp) * (nu2 / closure.ct_dp);
+  EXPECT_GT(kt, 0.0);
+  EXPECT_NEAR(t3.zz, -2.0 / 3.0 * kt, 1e-12);
+  const Vec2 a2 = sum_times(t2, t2, Vec2{0.3, -0.2});
+  const Vec3 a3 = sum_times(t3, t3, Vec3{0.3, -0.2, 0.0});
+  EXPECT_NEAR(a3.x, a2.x, 1e-12);
+  EXPECT_NEAR(a3.y, a2.y, 1e-12);
+  EXPECT_EQ(a3.z, 0.0);
 }
 
 }  // namespace
