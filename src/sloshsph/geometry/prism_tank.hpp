@@ -7,6 +7,7 @@
 // Not yet used by a scheme or a case: the first 3D geometry, on which the 3D scheme will stand.
 #include <vector>
 
+#include "sloshsph/core/particles.hpp"
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/geometry/tank.hpp"
 
@@ -47,5 +48,11 @@ std::vector<WallSample3> sample_walls(const PrismTank& tank, double dp, int laye
 // Fluid particles: the section's fill (fill_fluid: lattice points below `depth`, at least dp/2 from
 // the wall) at y = (k + 1/2) dp, k = 0 .. n_y - 1.
 std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth);
+
+// The particles of `tank` at rest: its fill to `depth` (fluid first, in fill order), then its wall
+// layers; volume dp^3, mass rho dp^3, the hydrostatic pressure rho g (depth - z) (walls: of their
+// height, 0 above the level); ids in that order. (The 3D counterpart of build_scene's particles,
+// for the 3D tests and benchmarks until a case can describe a 3D tank.)
+Particles3 particles_at_rest(const PrismTank& tank, double dp, double depth, int layers, double rho, double g);
 
 }  // namespace sloshsph
