@@ -66,6 +66,23 @@ struct ModeRun {
   std::size_t crossings = 0, outside = 0;
 };
 
+// The angular frequency of an oscillating signal sampled at `time`: pi times the half periods
+// between its first and last crossings of its mean (each crossing interpolated linearly between
+// two samples), into run.omega, and the number of crossings into run.crossings.
+void measure_frequency(const std::vector<double>& time, const std::vector<double>& signal, ModeRun& run) {
+  double mean = 0.0;
+  for (double v : signal) mean += v;
+  mean /= static_cast<double>(signal.size());
+  std::vector<double> crossings;
+  for (std::size_t s = 1; s < signal.size(); ++s) {
+    const double v0 = signal[s - 1] - mean, v1 = signal[s] - mean;
+    if ((v0 < 0.0) != (v1 < 0.0)) crossings.push_back(time[s - 1] + (time[s] - time[s - 1]) * v0 / (v0 - v1));
+  }
+  run.crossings = crossings.size();
+  if (crossings.size() >= 2)
+    run.omega = std::numbers::pi * static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
+}
+
 // The free (1,0) mode from its linear velocity field (see the test below), in 2D or 3D.
 template <int D>
 ModeRun first_mode(double L, double B, double h, double dp, double dt, double duration, double a) {
@@ -99,21 +116,12 @@ ModeRun first_mode(double L, double B, double h, double dp, double dt, double du
     centre.push_back(x / static_cast<double>(p.n_fluid));
   }
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    const double inside = D == 2 ? tank.section.signed_distance(Vec2{p.position[i].x, height_of<D>(p.position[i])})
-                                 : tank.signed_distance(at_breadth({p.position[i].x, height_of<D>(p.position[i])}, 0.5 * B));
+    double inside = 0.0;
+    if constexpr (D == 2) inside = tank.section.signed_distance(p.position[i]);
+    else inside = tank.signed_distance(p.position[i]);
     run.outside += inside > 0.0 ? 0 : 1;
   }
-  double mean = 0.0;
-  for (double c : centre) mean += c;
-  mean /= static_cast<double>(centre.size());
-  std::vector<double> crossings;  // linear interpolation between the samples
-  for (std::size_t s = 1; s < centre.size(); ++s) {
-    const double c0 = centre[s - 1] - mean, c1 = centre[s] - mean;
-    if ((c0 < 0.0) != (c1 < 0.0)) crossings.push_back(time[s - 1] + dt * c0 / (c0 - c1));
-  }
-  run.crossings = crossings.size();
-  if (crossings.size() >= 2)
-    run.omega = std::numbers::pi * static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
+  measure_frequency(time, centre, run);
   return run;
 }
 
@@ -169,17 +177,7 @@ ModeRun box_mode(const CaseSpec& spec, double B, int m, int n, double dt, double
     signal.push_back(sum / static_cast<double>(p.n_fluid));
   }
   for (std::size_t i = 0; i < p.n_fluid; ++i) run.outside += tank.signed_distance(p.position[i]) > 0.0 ? 0 : 1;
-  double mean = 0.0;
-  for (double v : signal) mean += v;
-  mean /= static_cast<double>(signal.size());
-  std::vector<double> crossings;
-  for (std::size_t s = 1; s < signal.size(); ++s) {
-    const double v0 = signal[s - 1] - mean, v1 = signal[s] - mean;
-    if ((v0 < 0.0) != (v1 < 0.0)) crossings.push_back(time[s - 1] + dt * v0 / (v0 - v1));
-  }
-  run.crossings = crossings.size();
-  if (crossings.size() >= 2)
-    run.omega = std::numbers::pi * static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
+  measure_frequency(time, signal, run);
   return run;
 }
 
