@@ -41,23 +41,10 @@ BasicParticles<D> box_particles(const CaseSpec& spec, const PrismTank& tank) {
   if constexpr (D == 3) {
     return testing::particles_at_rest(spec, tank);
   } else {
-    const double dp = spec.particles.dp, rho = spec.fluid.density, g = spec.fluid.gravity;
-    const std::vector<Vec2> fluid = fill_fluid(tank.section, dp, spec.fill.depth);
-    const std::vector<WallSample> walls = sample_walls(tank.section, dp, spec.particles.wall_layers);
-    Particles p;
-    p.resize(fluid.size() + walls.size());
-    p.n_fluid = fluid.size();
-    p.volume = dp * dp;
-    p.mass = rho * p.volume;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const bool is_fluid = i < fluid.size();
-      p.position[i] = is_fluid ? fluid[i] : walls[i - fluid.size()].position;
-      if (!is_fluid) p.normal[i] = walls[i - fluid.size()].normal;
-      p.pressure[i] = rho * g * std::max(0.0, spec.fill.depth - p.position[i].y);
-      p.density[i] = rho;
-      p.id[i] = static_cast<std::int32_t>(i);
-    }
-    return p;
+    const double dp = spec.particles.dp;
+    return particles_at_rest<2>(fill_fluid(tank.section, dp, spec.fill.depth),
+                                sample_walls(tank.section, dp, spec.particles.wall_layers), dp, spec.fill.depth,
+                                spec.fluid.density, spec.fluid.gravity);
   }
 }
 

@@ -36,7 +36,7 @@ TEST(Validation, HydrostaticBoxInThreeDimensions) {
   const CaseSpec spec = testing::box_case(0.3, 0.4, H, dp);
   const PrismTank tank{make_tank(spec.tank, "test"), 0.2};
   Particles3 p = testing::particles_at_rest(spec, tank);
-  const std::vector<Vec3> fluid = fill_fluid(tank, dp, H);  // where each particle started (by id)
+  const std::vector<Vec3> started_at = p.position;  // where each particle started (by id: id = index here)
   ASSERT_EQ(p.n_fluid, 1500u);
   ASSERT_EQ(p.n_wall(), 2852u);
 
@@ -55,7 +55,7 @@ TEST(Validation, HydrostaticBoxInThreeDimensions) {
   std::map<long, std::pair<double, int>> layers;
   std::size_t outside = 0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    auto& layer = layers[std::lround(fluid[static_cast<std::size_t>(p.id[i])].z / dp - 0.5)];
+    auto& layer = layers[std::lround(started_at[static_cast<std::size_t>(p.id[i])].z / dp - 0.5)];
     layer.first += p.pressure[i];
     layer.second += 1;
     outside += tank.signed_distance(p.position[i]) > 0.0 ? 0 : 1;

@@ -47,23 +47,4 @@ std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth) {
   return out;
 }
 
-Particles3 particles_at_rest(const PrismTank& tank, double dp, double depth, int layers, double rho, double g) {
-  const std::vector<Vec3> fluid = fill_fluid(tank, dp, depth);
-  const std::vector<WallSample3> walls = sample_walls(tank, dp, layers);
-  Particles3 p;
-  p.resize(fluid.size() + walls.size());
-  p.n_fluid = fluid.size();
-  p.volume = dp * dp * dp;
-  p.mass = rho * p.volume;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool is_fluid = i < fluid.size();
-    p.position[i] = is_fluid ? fluid[i] : walls[i - fluid.size()].position;
-    if (!is_fluid) p.normal[i] = walls[i - fluid.size()].normal;
-    p.pressure[i] = rho * g * std::max(0.0, depth - p.position[i].z);
-    p.density[i] = rho;
-    p.id[i] = static_cast<std::int32_t>(i);
-  }
-  return p;
-}
-
 }  // namespace sloshsph

@@ -5,6 +5,8 @@
 // x), y across the breadth (0 to `breadth`), z up (the section's y), as the probes have them.
 //
 // Not yet used by a scheme or a case: the first 3D geometry, on which the 3D scheme will stand.
+#include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include "sloshsph/core/particles.hpp"
@@ -49,10 +51,33 @@ std::vector<WallSample3> sample_walls(const PrismTank& tank, double dp, int laye
 // the wall) at y = (k + 1/2) dp, k = 0 .. n_y - 1.
 std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth);
 
-// The particles of `tank` at rest: its fill to `depth` (fluid first, in fill order), then its wall
-// layers; volume dp^3, mass rho dp^3, the hydrostatic pressure rho g (depth - z) (walls: of their
-// height, 0 above the level); ids in that order. (The 3D counterpart of build_scene's particles,
-// for the 3D tests and benchmarks until a case can describe a 3D tank.)
-Particles3 particles_at_rest(const PrismTank& tank, double dp, double depth, int layers, double rho, double g);
+// Particles at rest from a fill and its wall samples (WallSample or WallSample3), in 2 or 3
+// dimensions: the fluid first, in fill order, then the walls; volume dp^D, mass rho dp^D, the
+// hydrostatic pressure rho g (depth - height) (walls: of their height, 0 above the level; the
+// height is y in 2D, z in 3D); ids in that order.
+template <int D, class WallSampleType>
+BasicParticles<D> particles_at_rest(const std::vector<Vec<D>>& fluid, const std::vector<WallSampleType>& walls,
+                                    double dp, double depth, double rho, double g) {
+  BasicParticles<D> p;
+  p.resize(fluid.size() + walls.size());
+  p.n_fluid = fluid.size();
+  p.volume = D == 2 ? dp * dp : dp * dp * dp;
+  p.mass = rho * p.volume;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool is_fluid = i < fluid.size();
+    p.position[i] = is_fluid ? fluid[i] : walls[i - fluid.size()].position;
+    if (!is_fluid) p.normal[i] = walls[i - fluid.size()].normal;
+    p.pressure[i] = rho * g * std::max(0.0, depth - component(p.position[i], D - 1));
+    p.density[i] = rho;
+    p.id[i] = static_cast<std::int32_t>(i);
+  }
+  return p;
+}
+
+// The particles of `tank` at rest, filled to `depth` with `layers` of wall. (The 3D counterpart of
+// build_scene's particles, for the 3D tests and benchmarks until a case can describe a 3D tank.)
+inline Particles3 particles_at_rest(const PrismTank& tank, double dp, double depth, int layers, double rho, double g) {
+  return particles_at_rest<3>(fill_fluid(tank, dp, depth), sample_walls(tank, dp, layers), dp, depth, rho, g);
+}
 
 }  // namespace sloshsph
