@@ -20,6 +20,10 @@ struct FluidSpec {
 };
 
 struct TankSpec {
+  // 2: a tank section (x along the length, y up); 3: that section extruded over `breadth` (x along
+  // the length, y across the breadth, z up; geometry/prism_tank.hpp). Issue 31.
+  int dimensions = 2;
+  double breadth = 0.0;       // m, 3D: the inner breadth, between the end walls y = 0 and y = breadth
   // "rectangle", "sloped" (alias "triangle", "trapezoid"), "parabolic", "circular", "polyline".
   std::string shape = "rectangle";
   double length = 0.0;        // m, inner length (width of the section at the top of the walls)
@@ -238,6 +242,9 @@ struct ExcitationSpec {
   double omega = 0.0;                // rad/s, resolved (from frequency, omega or beta)
   double ramp = 0.0;                 // s, smooth ramp-up time
   double phase = 0.0;                // rad
+  // 3D: the horizontal unit vector (x, y) along which a translation (harmonic, record, pulse, noise)
+  // moves the tank; its signal is the displacement along it. 2D: always (1, 0).
+  Vec2 direction{1.0, 0.0};
   double stop = -1.0;                // s, harmonic/pitch motion stops after this time (< 0: never)
   // record (and pitch from a file: file, time_scale, value_unit, start)
   std::string file;                  // resolved path of the record (pitch: empty for the harmonic pitch)
@@ -264,12 +271,15 @@ inline bool is_pitch_record(const ExcitationSpec& e) { return e.type == Excitati
 
 struct GaugeSpec {
   std::string name;
-  double x = 0.0;  // m from the left wall
+  double x = 0.0;       // m from the left wall
+  double across = 0.0;  // m, 3D: the breadth coordinate y of the gauge's vertical line
 };
 
 struct PressureProbeSpec {
   std::string name;
-  Vec2 position;   // m: x from the left wall, y above the lowest point of the bottom
+  Vec2 position;   // m: x from the left wall, and the height above the lowest point of the bottom
+                   // (case key y in 2D, z in 3D)
+  double across = 0.0;  // m, 3D: the breadth coordinate (case key y)
   std::optional<Vec2> face_end;  // m: with it, the probe is a sensor face from `position` to here
                                  // and reads the mean pressure over it (observe/probes.hpp)
   double size = 0.0;  // m: > 0: a sensor face this long centred on `position`, along the wall nearest

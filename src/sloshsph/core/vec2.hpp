@@ -34,6 +34,13 @@ constexpr double component(Vec<D> a, int k) {
   else return k == 0 ? a.x : (k == 1 ? a.y : a.z);
 }
 
+// The same component, to be written.
+template <int D>
+constexpr double& component_ref(Vec<D>& a, int k) {
+  if constexpr (D == 2) return k == 0 ? a.x : a.y;
+  else return k == 0 ? a.x : (k == 1 ? a.y : a.z);
+}
+
 // Applies op to the components pairwise: {op(a.x, b.x), op(a.y, b.y)[, op(a.z, b.z)]}.
 template <int D, class Op>
 constexpr Vec<D> componentwise(Vec<D> a, Vec<D> b, Op op) {
@@ -75,6 +82,14 @@ template <int D>
 Vec<D> normalized(Vec<D> a) {
   const double n = norm(a);
   return n > 0.0 ? a / n : Vec<D>{};
+}
+
+// Every component finite.
+template <int D>
+bool is_finite(Vec<D> a) {
+  for (int k = 0; k < D; ++k)
+    if (!std::isfinite(component(a, k))) return false;
+  return true;
 }
 
 // 2D only: the scalar cross product, and rotations in the plane.

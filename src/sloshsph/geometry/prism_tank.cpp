@@ -11,11 +11,6 @@ int planes_across(const PrismTank& tank, double dp) { return static_cast<int>(st
 
 }  // namespace
 
-double PrismTank::signed_distance(Vec3 p) const {
-  const double across = std::min(p.y, breadth - p.y);
-  return std::min(section.signed_distance(in_section(p)), across);
-}
-
 std::vector<WallSample3> sample_walls(const PrismTank& tank, double dp, int layers) {
   std::vector<WallSample3> out;
   const int n_y = planes_across(tank, dp);

@@ -4,7 +4,7 @@
 // circular, polyline) gives a prismatic tank the same way. Axes: x along the length (the section's
 // x), y across the breadth (0 to `breadth`), z up (the section's y), as the probes have them.
 //
-// Not yet used by a scheme or a case: the first 3D geometry, on which the 3D scheme will stand.
+// Cases with tank.dimensions = 3 are built on it (geometry/scene.cpp build_scene3).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -20,14 +20,26 @@ inline constexpr Vec3 at_breadth(Vec2 s, double y) { return {s.x, y, s.y}; }
 // The section coordinates (x, height) of a point.
 inline constexpr Vec2 in_section(Vec3 p) { return {p.x, p.z}; }
 
+// The signed distance of a tank `section` extruded over `breadth` (positive inside): the smaller
+// of the section's distance of (x, z) and the distances y and breadth - y to the end walls. Exact
+// inside and on the walls; outside, its magnitude is the larger of the two distances (at an edge,
+// at most the true distance). In 2D, the section's own distance (breadth unused).
+template <int D>
+double container_signed_distance(const TankGeometry& section, double breadth, Vec<D> p) {
+  if constexpr (D == 2) {
+    (void)breadth;
+    return section.signed_distance(p);
+  } else {
+    return std::min(section.signed_distance(in_section(p)), std::min(p.y, breadth - p.y));
+  }
+}
+
 struct PrismTank {
   TankGeometry section;  // in the x-z plane, as TankGeometry's (x, y)
   double breadth = 0.0;  // m, between the end walls y = 0 and y = breadth
 
-  // Positive inside the fluid region: the smaller of the section's signed distance of (x, z) and
-  // the distances y and breadth - y to the end walls. Exact inside and on the walls; outside, its
-  // magnitude is the larger of the two distances (at an edge, at most the true distance).
-  double signed_distance(Vec3 p) const;
+  // container_signed_distance of the prism.
+  double signed_distance(Vec3 p) const { return container_signed_distance<3>(section, breadth, p); }
 };
 
 struct WallSample3 {
@@ -53,11 +65,12 @@ std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth);
 
 // Particles at rest from a fill and its wall samples (WallSample or WallSample3), in 2 or 3
 // dimensions: the fluid first, in fill order, then the walls; volume dp^D, mass rho dp^D, the
-// hydrostatic pressure rho g (depth - height) (walls: of their height, 0 above the level; the
-// height is y in 2D, z in 3D); ids in that order.
+// hydrostatic pressure rho g (level - height) below the still level (walls too, 0 above it; the
+// height is y in 2D, z in 3D; the level is a height, the depth when the bottom is at 0); ids in
+// that order.
 template <int D, class WallSampleType>
 BasicParticles<D> particles_at_rest(const std::vector<Vec<D>>& fluid, const std::vector<WallSampleType>& walls,
-                                    double dp, double depth, double rho, double g) {
+                                    double dp, double level, double rho, double g) {
   BasicParticles<D> p;
   p.resize(fluid.size() + walls.size());
   p.n_fluid = fluid.size();
@@ -67,17 +80,18 @@ BasicParticles<D> particles_at_rest(const std::vector<Vec<D>>& fluid, const std:
     const bool is_fluid = i < fluid.size();
     p.position[i] = is_fluid ? fluid[i] : walls[i - fluid.size()].position;
     if (!is_fluid) p.normal[i] = walls[i - fluid.size()].normal;
-    p.pressure[i] = rho * g * std::max(0.0, depth - component(p.position[i], D - 1));
+    p.pressure[i] = rho * g * std::max(0.0, level - component(p.position[i], D - 1));
     p.density[i] = rho;
     p.id[i] = static_cast<std::int32_t>(i);
   }
   return p;
 }
 
-// The particles of `tank` at rest, filled to `depth` with `layers` of wall. (The 3D counterpart of
-// build_scene's particles, for the 3D tests and benchmarks until a case can describe a 3D tank.)
+// The particles of `tank` at rest, filled to `depth` with `layers` of wall (for the 3D tests and
+// benchmarks that build a tank without a case).
 inline Particles3 particles_at_rest(const PrismTank& tank, double dp, double depth, int layers, double rho, double g) {
-  return particles_at_rest<3>(fill_fluid(tank, dp, depth), sample_walls(tank, dp, layers), dp, depth, rho, g);
+  return particles_at_rest<3>(fill_fluid(tank, dp, depth), sample_walls(tank, dp, layers), dp,
+                              tank.section.y_bottom + depth, rho, g);
 }
 
 }  // namespace sloshsph

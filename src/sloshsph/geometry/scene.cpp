@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/prism_tank.hpp"
 #include "sloshsph/geometry/screens.hpp"
 
 namespace sloshsph {
@@ -129,7 +130,72 @@ void add_fill_warning(const CaseSpec& spec, const TankGeometry& tank, std::size_
   warnings.push_back(text);
 }
 
+// 3D: each gauge's vertical line (x, y) inside the tank's plan, each probe inside the tank (or in
+// its first wall layer, as in 2D) and below the top of the walls.
+void check_probes_3d(const CaseSpec& spec, const TankGeometry& section, double breadth) {
+  for (std::size_t k = 0; k < spec.gauges.size(); ++k) {
+    const GaugeSpec& g = spec.gauges[k];
+    const std::string key = "probes.gauge." + std::to_string(k) + (g.x <= section.x_min || g.x >= section.x_max ? ".x" : ".y");
+    if (g.x <= section.x_min || g.x >= section.x_max || g.across <= 0.0 || g.across >= breadth) {
+      std::ostringstream m;
+      m << "gauge '" << g.name << "' at (x, y) = (" << g.x << ", " << g.across << ") m is outside the tank ("
+        << section.x_min << " < x < " << section.x_max << ", 0 < y < " << breadth << ")";
+      throw InputError(spec.where(key), key, m.str());
+    }
+  }
+  for (std::size_t k = 0; k < spec.pressure_probes.size(); ++k) {
+    const PressureProbeSpec& probe = spec.pressure_probes[k];
+    const Vec3 at = at_breadth(probe.position, probe.across);
+    if (container_signed_distance<3>(section, breadth, at) < -spec.particles.dp || at.z > section.y_top) {
+      const std::string key = "probes.pressure." + std::to_string(k) + ".x";
+      std::ostringstream m;
+      m << "pressure probe '" << probe.name << "' at (" << at.x << ", " << at.y << ", " << at.z << ") m is outside the tank";
+      throw InputError(spec.where(key), key, m.str());
+    }
+  }
+}
+
+// 3D: the lattice across the breadth has floor(breadth / dp) planes; a remainder leaves a gap of
+// water at the far end wall, as add_fill_warning's gap does in the section.
+void add_breadth_warning(const CaseSpec& spec, std::vector<std::string>& warnings) {
+  const double dp = spec.particles.dp, breadth = spec.tank.breadth;
+  const double gap = breadth - std::floor(breadth / dp + 1e-9) * dp;
+  if (gap <= 0.2 * dp) return;
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "tank.breadth: the lattice of spacing dp = %.6g m fills %.6g m of the breadth %.6g m; the water "
+                "begins by filling the gap of %.3g m at the end wall y = breadth (a dp that divides the breadth avoids it)",
+                dp, breadth - gap, breadth, gap);
+  warnings.push_back(text);
+}
+
 }  // namespace
+
+Scene3 build_scene3(const CaseSpec& spec) {
+  auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));
+  const PrismTank prism{*tank, spec.tank.breadth};
+  check_probes_3d(spec, *tank, prism.breadth);
+  Scene3 scene;
+  scene.tank = tank;
+  scene.breadth = prism.breadth;
+  for (const PressureProbeSpec& probe : spec.pressure_probes) {
+    const Vec3 at = at_breadth(probe.position, probe.across);
+    scene.pressure_sensors.push_back({at, at, false});
+  }
+  add_time_step_warnings(spec, scene.warnings);
+  scene.dp = spec.particles.dp;
+  scene.h = spec.particles.kernel_ratio * spec.particles.dp;
+  scene.still_level = tank->y_bottom + spec.fill.depth;
+  const std::vector<Vec3> fluid = fill_fluid(prism, scene.dp, spec.fill.depth);
+  if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
+  add_fill_warning(spec, *tank, fill_fluid(*tank, scene.dp, spec.fill.depth).size(), scene.warnings);
+  add_breadth_warning(spec, scene.warnings);
+  scene.particles = particles_at_rest<3>(fluid, sample_walls(prism, scene.dp, spec.particles.wall_layers), scene.dp,
+                                         scene.still_level, spec.fluid.density, spec.fluid.gravity);
+  scene.initial_fluid_count = scene.particles.n_fluid;
+  scene.initial_fluid_mass = scene.particles.mass * static_cast<double>(scene.particles.n_fluid);
+  return scene;
+}
 
 Scene build_scene(const CaseSpec& spec) {
   auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));

@@ -51,7 +51,15 @@ FillSpec read_fill(TableReader& r) {
 // "unknown key" error rather than silently ignored.
 TankSpec read_tank(TableReader& r) {
   TankSpec t;
-  t.shape = r.choice("shape", t.shape, {"rectangle", "sloped", "triangle", "trapezoid", "parabolic", "circular", "polyline"});
+  t.dimensions = static_cast<int>(r.integer("dimensions", t.dimensions, 2, 3));
+  t.shape = r.choice("shape", t.shape,
+                     {"rectangle", "sloped", "triangle", "trapezoid", "parabolic", "circular", "polyline", "cylinder"});
+  if (t.shape == "cylinder")
+    r.fail("shape", "\"cylinder\" (an upright circular tank, issue 31) is not available yet; in 3D every other shape "
+                    "is extruded over `breadth` (a box for \"rectangle\")");
+  if (t.dimensions == 3) t.breadth = r.positive("breadth");
+  else if (r.has("breadth"))
+    r.fail("breadth", "is the breadth of a 3D tank: set dimensions = 3, or remove it (a 2D case is per metre of breadth)");
   if (t.shape == "polyline") {
     t.points = r.points("points");
     if (t.points.size() < 3) r.fail("points", "a polyline tank needs at least 3 points");
@@ -276,6 +284,11 @@ ExcitationSpec read_excitation(TableReader& r) {
     if (!(e.band_low > 0.0 && e.band_high > e.band_low)) r.fail("band", "expected [f_low, f_high] with 0 < f_low < f_high (Hz)");
     e.rms = r.positive("rms");
   }
+  if (r.has("direction")) {
+    const Vec2 d = r.point("direction");
+    if (!(norm(d) > 1e-12) || !std::isfinite(norm(d))) r.fail("direction", "expected a horizontal vector [x, y], not zero");
+    e.direction = normalized(d);
+  }
   r.finish();
   return e;
 }
@@ -287,6 +300,7 @@ void read_probes(TableReader& r, CaseSpec& spec) {
     gs.name = g.string("name");
     check_name(g, "name", gs.name, names);
     gs.x = g.number("x");
+    if (spec.tank.dimensions == 3) gs.across = g.number("y");
     g.finish();
     spec.gauges.push_back(gs);
   }
@@ -295,7 +309,15 @@ void read_probes(TableReader& r, CaseSpec& spec) {
     PressureProbeSpec ps;
     ps.name = p.string("name");
     check_name(p, "name", ps.name, names);
-    ps.position = {p.number("x"), p.number("y")};
+    if (spec.tank.dimensions == 3) {
+      // 3D: y across the breadth, z up (issue 31); a sensor face is not available in 3D yet.
+      ps.position = {p.number("x"), p.number("z")};
+      ps.across = p.number("y");
+      for (const char* key : {"to", "size"})
+        if (p.has(key)) p.fail(key, "a sensor face is not available in 3D yet: the probe reads at the point (x, y, z)");
+    } else {
+      ps.position = {p.number("x"), p.number("y")};
+    }
     ps.face_end = p.optional_point("to");
     ps.size = p.non_negative("size", 0.0);
     if (ps.size > 0.0 && ps.face_end)
@@ -554,15 +576,43 @@ void check_structure_consistency(const CaseSpec& s) {
 // fill blocks made the reader lay out 1e18 lattice points: the mutation test's hang).
 void check_particle_estimate(const CaseSpec& s) {
   const double dp = s.particles.dp;
-  const double estimate = (s.tank.length + 2.0 * s.particles.wall_layers * dp) *
-                          (s.tank.height + s.particles.wall_layers * dp) / (dp * dp);
+  const double walls = s.particles.wall_layers * dp;
+  double estimate = (s.tank.length + 2.0 * walls) * (s.tank.height + walls) / (dp * dp);
+  if (s.tank.dimensions == 3) estimate *= (s.tank.breadth + 2.0 * walls) / dp;
   if (estimate > 2.0e7) {
     // Printed as a double: a huge tank gives an estimate beyond long long (or inf), and that
     // conversion would be undefined behaviour.
     std::ostringstream m;
-    m << "would need about " << std::setprecision(3) << estimate << " particles (limit 2e7 in 2D): is dp in metres?";
+    m << "would need about " << std::setprecision(3) << estimate << " particles (limit 2e7 in "
+      << s.tank.dimensions << "D): is dp in metres?";
     throw InputError(s.where("particles.dp"), "particles.dp", m.str());
   }
+}
+
+// What a 3D case (tank.dimensions = 3, issue 31) can hold so far: the ISPH scheme in a tank
+// extruded over its breadth, moved by a translation along excitation.direction, with gauges and
+// point pressure probes. Everything else is refused by name rather than run as if it were 2D.
+// In 2D, excitation.direction can only be the x axis.
+void check_dimensions(const CaseSpec& s) {
+  auto fail = [&](const std::string& key, const std::string& what) { throw InputError(s.where(key), key, what); };
+  if (s.tank.dimensions == 2) {
+    if (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0)
+      fail("excitation.direction", "is for 3D tanks (tank.dimensions = 3): a 2D tank moves along x only");
+    return;
+  }
+  const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH scheme with "
+                              "a translation along excitation.direction, gauges and point pressure probes";
+  if (s.scheme.type != "isph") fail("scheme.type", "\"" + s.scheme.type + "\"" + not_yet);
+  if (s.scheme.repulsive_walls) fail("scheme.repulsive_walls", "the repulsive wall force" + not_yet);
+  if (s.excitation.type == ExcitationType::pitch) fail("excitation.type", "a pitch (rotation)" + not_yet);
+  if (!s.fill.blocks.empty()) fail("fill.blocks", "fill blocks" + not_yet);
+  if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
+  if (!s.screens.empty()) fail("screens", "a screen" + not_yet);
+  if (!s.plates.empty()) fail("plates", "an elastic plate" + not_yet);
+  if (s.structure) fail("structure", "the structure (a 2-DOF building for 3D)" + not_yet);
+  if (s.tank.breadth < 4.0 * s.particles.dp)
+    fail("particles.dp", "too coarse: the tank is fewer than 4 particles across its breadth (tank.breadth = " +
+                             std::to_string(s.tank.breadth) + " m)");
 }
 
 // Fluid blocks: each inside the tank's extent, at least one particle across, below the wall
@@ -648,6 +698,7 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
   if (s.tank.length < 8.0 * dp)
     fail("particles.dp", "too coarse: the tank is fewer than 8 particles long");
   check_particle_estimate(s);
+  check_dimensions(s);
   // Hard stability bound on a fixed step: CFL 0.4 on the gravity-wave speed plus the
   // base velocity, and the viscous bound 0.125 dp^2 / nu. The thesis's own bound
   // (0.1 dp / u_max, section 2.6.3.2) is the adaptive step's; see docs/case-format.md.
@@ -965,6 +1016,11 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (!s.title.empty()) root.insert("title", s.title);
   root.insert("fluid", toml::table{{"density", s.fluid.density}, {"viscosity", s.fluid.viscosity}, {"gravity", s.fluid.gravity}});
   toml::table tank{{"shape", s.tank.shape}};
+  const bool three_d = s.tank.dimensions == 3;  // 2D cases keep the case.toml they had before issue 31
+  if (three_d) {
+    tank.insert("dimensions", 3);
+    tank.insert("breadth", s.tank.breadth);
+  }
   if (s.tank.shape == "polyline") {
     toml::array pts;
     for (const Vec2& q : s.tank.points) pts.push_back(toml::array{q.x, q.y});
@@ -992,11 +1048,20 @@ std::string resolved_case_toml(const CaseSpec& s) {
   root.insert("scheme", scheme_table(s.scheme));
   root.insert("time", toml::table{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl},
                                   {"settle", s.time.settle}});
-  if (s.excitation.type != ExcitationType::none) root.insert("excitation", excitation_table(s.excitation));
+  if (s.excitation.type != ExcitationType::none) {
+    toml::table excitation = excitation_table(s.excitation);
+    if (three_d) excitation.insert("direction", toml::array{s.excitation.direction.x, s.excitation.direction.y});
+    root.insert("excitation", excitation);
+  }
   toml::array gauges, pressures;
-  for (const auto& g : s.gauges) gauges.push_back(toml::table{{"name", g.name}, {"x", g.x}});
+  for (const auto& g : s.gauges) {
+    toml::table gauge{{"name", g.name}, {"x", g.x}};
+    if (three_d) gauge.insert("y", g.across);
+    gauges.push_back(gauge);
+  }
   for (const auto& p : s.pressure_probes) {
-    toml::table probe{{"name", p.name}, {"x", p.position.x}, {"y", p.position.y}};
+    toml::table probe = three_d ? toml::table{{"name", p.name}, {"x", p.position.x}, {"y", p.across}, {"z", p.position.y}}
+                                : toml::table{{"name", p.name}, {"x", p.position.x}, {"y", p.position.y}};
     if (p.face_end) probe.insert("to", toml::array{p.face_end->x, p.face_end->y});
     if (p.size > 0.0) probe.insert("size", p.size);
     pressures.push_back(probe);

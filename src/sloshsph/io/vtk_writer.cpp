@@ -24,17 +24,18 @@ struct Appended {
 
 }  // namespace
 
-void write_vtu(const std::string& path, const Particles& p, bool include_walls) {
+template <int D>
+void write_vtu(const std::string& path, const BasicParticles<D>& p, bool include_walls) {
   const std::size_t n = include_walls ? p.size() : p.n_fluid;
   std::vector<float> points(3 * n), velocity(3 * n), pressure(n), density(n);
   std::vector<std::uint8_t> kind(n), types(n, 1);  // VTK_VERTEX
   std::vector<std::int32_t> id(n);
   std::vector<std::int64_t> connectivity(n), offsets(n);
   for (std::size_t i = 0; i < n; ++i) {
-    points[3 * i] = static_cast<float>(p.position[i].x);
-    points[3 * i + 1] = static_cast<float>(p.position[i].y);
-    velocity[3 * i] = static_cast<float>(p.velocity[i].x);
-    velocity[3 * i + 1] = static_cast<float>(p.velocity[i].y);
+    for (int a = 0; a < D; ++a) {
+      points[3 * i + a] = static_cast<float>(component(p.position[i], a));
+      velocity[3 * i + a] = static_cast<float>(component(p.velocity[i], a));
+    }
     pressure[i] = static_cast<float>(p.pressure[i]);
     density[i] = static_cast<float>(p.density[i]);
     kind[i] = p.is_fluid(i) ? 0 : 1;
@@ -74,6 +75,9 @@ void write_vtu(const std::string& path, const Particles& p, bool include_walls) 
   content += "\n  </AppendedData>\n</VTKFile>\n";
   write_file_atomic(path, content);
 }
+
+template void write_vtu<2>(const std::string&, const BasicParticles<2>&, bool);
+template void write_vtu<3>(const std::string&, const BasicParticles<3>&, bool);
 
 void PvdIndex::add(double time, const std::string& relative_file) {
   entries_.emplace_back(time, relative_file);

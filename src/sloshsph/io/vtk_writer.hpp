@@ -11,8 +11,12 @@
 namespace sloshsph {
 
 // Writes the particles (fluid, and walls if include_walls) with point data velocity,
-// pressure, density, kind (0 fluid, 1 wall) and id. Atomic (temporary file + rename).
-void write_vtu(const std::string& path, const Particles& particles, bool include_walls);
+// pressure, density, kind (0 fluid, 1 wall) and id. Atomic (temporary file + rename). 2D
+// particles lie in the plane z = 0 (x along the length, y up); 3D ones keep their (x, y, z).
+template <int D>
+void write_vtu(const std::string& path, const BasicParticles<D>& particles, bool include_walls);
+extern template void write_vtu<2>(const std::string&, const BasicParticles<2>&, bool);
+extern template void write_vtu<3>(const std::string&, const BasicParticles<3>&, bool);
 
 // The .pvd index: rewritten (atomically) after each added snapshot.
 class PvdIndex {

@@ -5,6 +5,7 @@
 // as their distance does, so nothing in the momentum equation parts two that have met).
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 
 #include "sloshsph/core/particles.hpp"
 #include "sloshsph/sph/neighbours.hpp"
@@ -13,8 +14,12 @@ namespace sloshsph {
 
 // The smallest distance between two fluid particles, in m, or `reach` when no two are closer than
 // that. One cell grid of the fluid with cells of `reach`: O(n).
-inline double closest_fluid_pair(const Particles& p, double reach) {
-  CellGrid grid;
+// NaN when a fluid position is not finite (the state of a failed step, sampled for the record).
+template <int D>
+double closest_fluid_pair(const BasicParticles<D>& p, double reach) {
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    if (!is_finite(p.position[i])) return std::numeric_limits<double>::quiet_NaN();
+  BasicCellGrid<D> grid;
   grid.build(p.position, 0, p.n_fluid, reach);
   double closest2 = reach * reach;
   for (std::size_t i = 0; i < p.n_fluid; ++i)

@@ -12,36 +12,47 @@
 
 namespace sloshsph {
 
-// Height of the free surface above x: the highest y at which the kernel-interpolated fluid
-// fraction phi(y) = c_f / (c_full - c_w) reaches 1/2, where c_f and c_w are the kernel
-// sums sum_j V W over fluid and wall particles and c_full is that sum in undisturbed fluid.
-// The wall term keeps the fraction right within 2h of a wall. Returns y_floor if the column is dry.
-template <class K>
-double free_surface_height(const K& k, const Particles& p, double x, double y_floor, double c_full) {
+// Height of the free surface on the vertical line through `column` (its height component is
+// ignored; in 2D the line x = column.x, in 3D x = column.x, y = column.y): the highest height at
+// which the kernel-interpolated fluid fraction phi = c_f / (c_full - c_w) reaches 1/2, where c_f
+// and c_w are the kernel sums sum_j V W over fluid and wall particles and c_full is that sum in
+// undisturbed fluid. The wall term keeps the fraction right within 2h of a wall. Returns
+// `floor` if the line is dry. Heights are y in 2D, z in 3D.
+template <class K, int D>
+double free_surface_height(const K& k, const BasicParticles<D>& p, Vec<D> column, double floor, double c_full) {
   const double reach = k.support();
-  std::vector<Vec2> fluid, wall;
-  double y_hi = y_floor;
-  for (std::size_t j = 0; j < p.n_fluid; ++j)
-    if (std::abs(p.position[j].x - x) < reach) {
-      fluid.push_back(p.position[j]);
-      y_hi = std::max(y_hi, p.position[j].y);
+  auto near_line = [&](Vec<D> r) {
+    if constexpr (D == 2) {
+      return std::abs(r.x - column.x) < reach;
+    } else {
+      const double dx = r.x - column.x, dy = r.y - column.y;
+      return dx * dx + dy * dy < reach * reach;
     }
-  if (fluid.empty()) return y_floor;
+  };
+  std::vector<Vec<D>> fluid, wall;
+  double top = floor;
+  for (std::size_t j = 0; j < p.n_fluid; ++j)
+    if (near_line(p.position[j])) {
+      fluid.push_back(p.position[j]);
+      top = std::max(top, component(p.position[j], D - 1));
+    }
+  if (fluid.empty()) return floor;
   for (std::size_t j = p.n_fluid; j < p.size(); ++j)
-    if (std::abs(p.position[j].x - x) < reach) wall.push_back(p.position[j]);
+    if (near_line(p.position[j])) wall.push_back(p.position[j]);
 
-  auto fraction = [&](double y) {
-    const Vec2 q{x, y};
+  auto fraction = [&](double height) {
+    Vec<D> q = column;
+    component_ref(q, D - 1) = height;
     double cf = 0.0, cw = 0.0;
-    for (const Vec2& r : fluid) cf += k.w(norm(q - r));
-    for (const Vec2& r : wall) cw += k.w(norm(q - r));
+    for (const Vec<D>& r : fluid) cf += k.w(norm(q - r));
+    for (const Vec<D>& r : wall) cw += k.w(norm(q - r));
     cf *= p.volume;
     cw *= p.volume;
     return cf / std::max(c_full - cw, 0.5 * c_full);
   };
   const double step = 0.05 * k.h;
-  double y_prev = y_hi + reach, f_prev = fraction(y_prev);
-  for (double y = y_prev - step; y > y_floor - step; y -= step) {
+  double y_prev = top + reach, f_prev = fraction(y_prev);
+  for (double y = y_prev - step; y > floor - step; y -= step) {
     const double f = fraction(y);
     if (f >= 0.5) {
       const double t = (0.5 - f_prev) / (f - f_prev);  // linear between the bracketing samples
@@ -50,14 +61,20 @@ double free_surface_height(const K& k, const Particles& p, double x, double y_fl
     y_prev = y;
     f_prev = f;
   }
-  return y_floor;
+  return floor;
+}
+
+// The 2D gauge at x.
+template <class K>
+double free_surface_height(const K& k, const Particles& p, double x, double y_floor, double c_full) {
+  return free_surface_height<K, 2>(k, p, Vec2{x, 0.0}, y_floor, c_full);
 }
 
 // Shepard interpolation of pressure at a point over fluid and wall particles (wall
 // particles carry the Adami pressure, the fluid pressure continued through the wall).
 // A probe with almost no fluid in its kernel (fluid kernel sum below 0.1) reads 0.
-template <class K>
-double pressure_at(const K& k, const Particles& p, const CellGrid& grid, Vec2 point) {
+template <class K, int D>
+double pressure_at(const K& k, const BasicParticles<D>& p, const BasicCellGrid<D>& grid, Vec<D> point) {
   double num = 0.0, den = 0.0, fluid = 0.0;
   grid.for_each_candidate(point, k.support(), [&](std::uint32_t j) {
     const double W = k.w(norm(point - p.position[j]));

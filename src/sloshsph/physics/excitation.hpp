@@ -62,4 +62,29 @@ inline FrameForce frame_force(double gravity, const BaseMotion& m) {
   return f;
 }
 
+// 3D (issue 31): the base translates along the horizontal unit vector `direction` = (d_x, d_y)
+// (excitation.direction); the motion's x is the displacement along it, its y the vertical one.
+// A vector of the motion in 3D tank axes: (x d_x, x d_y, y).
+inline Vec3 along_direction(Vec2 motion, Vec2 direction) {
+  return {motion.x * direction.x, motion.x * direction.y, motion.y};
+}
+
+// The body force of a translating 3D tank: gravity (-z) less the base acceleration. No rotation
+// in 3D yet (the case reader refuses a pitch).
+inline FrameForce3 frame_force3(double gravity, const BaseMotion& m, Vec2 direction) {
+  FrameForce3 f;
+  f.uniform = Vec3{0.0, 0.0, -gravity} - along_direction(m.acceleration, direction);
+  return f;
+}
+
+template <int D>
+BasicFrameForce<D> frame_force_in(double gravity, const BaseMotion& m, Vec2 direction) {
+  if constexpr (D == 2) {
+    (void)direction;
+    return frame_force(gravity, m);
+  } else {
+    return frame_force3(gravity, m, direction);
+  }
+}
+
 }  // namespace sloshsph

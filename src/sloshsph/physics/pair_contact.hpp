@@ -42,20 +42,24 @@
 namespace sloshsph {
 
 // The direction from particle i to j for the contact (see above); unit length.
-inline Vec2 contact_direction(Vec2 rij_to_j, Vec2 relative_velocity) {
+template <int D>
+Vec<D> contact_direction(Vec<D> rij_to_j, Vec<D> relative_velocity) {
   const double r = norm(rij_to_j);
   if (r > 0.0) return rij_to_j / r;
   const double u = norm(relative_velocity);
   if (u > 0.0) return relative_velocity / u;
-  return Vec2{1.0, 0.0};
+  Vec<D> x_axis;
+  x_axis.x = 1.0;
+  return x_axis;
 }
 
 // One pair's contact; returns true if it corrected the pair.
-inline bool correct_pair_contact(Particles& p, std::size_t i, std::size_t j, double contact) {
-  const Vec2 d = p.position[j] - p.position[i];
+template <int D>
+bool correct_pair_contact(BasicParticles<D>& p, std::size_t i, std::size_t j, double contact) {
+  const Vec<D> d = p.position[j] - p.position[i];
   const double r2 = norm2(d);
   if (!(r2 < contact * contact)) return false;  // also false for a non-finite position
-  const Vec2 n = contact_direction(d, p.velocity[j] - p.velocity[i]);
+  const Vec<D> n = contact_direction<D>(d, p.velocity[j] - p.velocity[i]);
   const double approach = dot(p.velocity[j] - p.velocity[i], n);
   const double r = std::sqrt(r2);
   const bool too_close = r < 0.5 * contact;
@@ -83,12 +87,13 @@ inline bool correct_pair_contact(Particles& p, std::size_t i, std::size_t j, dou
 // The candidates keep the order of the neighbour list's rows (i ascending, then i's row), so
 // the corrections are made in the same order whenever the candidates were collected: a resumed
 // run, which collects afresh, gives the same bits.
-class PairContactStep {
+template <int D>
+class BasicPairContactStep {
  public:
-  explicit PairContactStep(double dp) : contact_(0.25 * dp), reach_(0.75 * dp) {}
+  explicit BasicPairContactStep(double dp) : contact_(0.25 * dp), reach_(0.75 * dp) {}
 
   // Corrects the close pairs of `p`; returns how many pairs it corrected.
-  std::size_t apply(Particles& p, const NeighbourList& list) {
+  std::size_t apply(BasicParticles<D>& p, const BasicNeighbourList<D>& list) {
     if (stale(p, list)) collect(p, list);
     std::size_t corrected = 0;
     for (std::size_t k = 0; k < first_.size(); ++k)
@@ -98,18 +103,18 @@ class PairContactStep {
 
   std::size_t memory_bytes() const {
     return (first_.capacity() + second_.capacity() + count_.capacity()) * sizeof(std::uint32_t) +
-           position_at_collect_.capacity() * sizeof(Vec2);
+           position_at_collect_.capacity() * sizeof(Vec<D>);
   }
 
  private:
-  bool stale(const Particles& p, const NeighbourList& list) const {
+  bool stale(const BasicParticles<D>& p, const BasicNeighbourList<D>& list) const {
     if (list.builds() != list_builds_ || p.n_fluid != position_at_collect_.size()) return true;
     return moved_more_than(p.position, position_at_collect_, p.n_fluid, 0.5 * (reach_ - contact_));
   }
 
   // The pairs (i < j, both fluid) closer than reach_, counted per row and then written in row
   // order, both passes in parallel.
-  void collect(const Particles& p, const NeighbourList& list) {
+  void collect(const BasicParticles<D>& p, const BasicNeighbourList<D>& list) {
     const std::size_t nf = std::min(p.n_fluid, list.rows());
     const double reach2 = reach_ * reach_;
     auto close = [&](std::size_t i, std::uint32_t j) {
@@ -138,9 +143,11 @@ class PairContactStep {
   double contact_;  // d_c = dp/4
   double reach_;    // 3 d_c: pairs closer than this are the candidates
   std::size_t list_builds_ = static_cast<std::size_t>(-1);
-  std::vector<Vec2> position_at_collect_;  // the fluid's positions at the last collection
+  std::vector<Vec<D>> position_at_collect_;  // the fluid's positions at the last collection
   std::vector<std::uint32_t> count_;       // row offsets into the candidates (collection scratch)
   std::vector<std::uint32_t> first_, second_;  // the candidate pairs (i < j)
 };
+
+using PairContactStep = BasicPairContactStep<2>;
 
 }  // namespace sloshsph

@@ -31,36 +31,53 @@
 
 namespace sloshsph {
 
-struct WallContact {
+template <int D>
+struct BasicWallContact {
   std::size_t corrected = 0;  // particles whose velocity or position was corrected
-  Vec2 force_on_fluid;        // N/m, the momentum the walls took out of the fluid, per dt
+  Vec<D> force_on_fluid;      // N/m (N in 3D), the momentum the walls took out of the fluid, per dt
 };
+using WallContact = BasicWallContact<2>;
 
-// Inward unit normal of the container at p: the gradient of the exact signed distance
-// (central differences over `eps`); at a corner, the direction away from the nearest point.
-inline Vec2 container_normal(const TankGeometry& tank, Vec2 p, double eps) {
-  const Vec2 g{tank.signed_distance(p + Vec2{eps, 0.0}) - tank.signed_distance(p - Vec2{eps, 0.0}),
-               tank.signed_distance(p + Vec2{0.0, eps}) - tank.signed_distance(p - Vec2{0.0, eps})};
+// Inward unit normal of the container at p: the gradient of the exact signed distance `exact`
+// (central differences over `eps`, one axis after the other); at a corner, the direction away
+// from the nearest point.
+template <int D, class ExactDistance>
+Vec<D> container_normal(const ExactDistance& exact, Vec<D> p, double eps) {
+  Vec<D> g;
+  for (int a = 0; a < D; ++a) {
+    Vec<D> step;
+    component_ref(step, a) = eps;
+    component_ref(g, a) = exact(p + step) - exact(p - step);
+  }
   const double length = norm(g);
-  return length > 0.0 ? g / length : Vec2{0.0, 1.0};
+  if (length > 0.0) return g / length;
+  Vec<D> up;
+  component_ref(up, D - 1) = 1.0;
+  return up;
 }
 
-// The wall-contact step above on the fluid particles of `p`. `distance` is the sampled signed
-// distance (a cheap first test: bilinear between grid nodes `grid` apart, so within sqrt(2) grid
-// of the exact value, the distance being 1-Lipschitz), `tank` the exact one. Serial, so that the
-// force sum does not depend on the thread count; the first test is one grid look-up per particle.
-inline WallContact keep_fluid_in_tank(Particles& p, const ContainerDistance& distance, const TankGeometry& tank,
-                                      double dp, double grid, double dt) {
+inline Vec2 container_normal(const TankGeometry& tank, Vec2 p, double eps) {
+  return container_normal<2>([&tank](Vec2 q) { return tank.signed_distance(q); }, p, eps);
+}
+
+// The wall-contact step above on the fluid particles of `p`. `sampled` is a cheap first test of
+// the signed distance (in 2D the sampled ContainerDistance: bilinear between grid nodes `grid`
+// apart, so within sqrt(2) grid of the exact value, the distance being 1-Lipschitz), `exact` the
+// exact one. Serial, so that the force sum does not depend on the thread count; the first test is
+// one look-up per particle.
+template <int D, class SampledDistance, class ExactDistance>
+BasicWallContact<D> keep_fluid_in_container(BasicParticles<D>& p, const SampledDistance& sampled,
+                                            const ExactDistance& exact, double dp, double grid, double dt) {
   const double contact = 0.25 * dp;
-  WallContact out;
+  BasicWallContact<D> out;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     // A non-finite position is not a contact: the driver's check reports it (it was counted
     // as a correction before, so the Faltinsen WCSPH run's last row showed 2 contacts).
-    if (!std::isfinite(p.position[i].x) || !std::isfinite(p.position[i].y)) continue;
-    if (distance(p.position[i]) >= contact + 1.5 * grid) continue;
-    const double d = tank.signed_distance(p.position[i]);
+    if (!is_finite(p.position[i])) continue;
+    if (sampled(p.position[i]) >= contact + 1.5 * grid) continue;
+    const double d = exact(p.position[i]);
     if (d >= contact) continue;
-    const Vec2 n = container_normal(tank, p.position[i], 1e-3 * dp);
+    const Vec<D> n = container_normal<D>(exact, p.position[i], 1e-3 * dp);
     const double approach = dot(p.velocity[i], n);
     if (approach >= 0.0 && d >= 0.0) continue;  // close, but leaving: nothing to do
     if (approach < 0.0) {
@@ -71,6 +88,13 @@ inline WallContact keep_fluid_in_tank(Particles& p, const ContainerDistance& dis
     ++out.corrected;
   }
   return out;
+}
+
+// The 2D tank: the sampled ContainerDistance and the section's exact distance.
+inline WallContact keep_fluid_in_tank(Particles& p, const ContainerDistance& distance, const TankGeometry& tank,
+                                      double dp, double grid, double dt) {
+  return keep_fluid_in_container<2>(
+      p, distance, [&tank](Vec2 q) { return tank.signed_distance(q); }, dp, grid, dt);
 }
 
 }  // namespace sloshsph

@@ -26,23 +26,38 @@ nlohmann::json impact_peak_json(const std::vector<double>* time, const std::vect
 
 }  // namespace
 
+template <int D>
 nlohmann::json pressure_probes_summary(const std::vector<PressureProbeSpec>& probes,
-                                       const std::vector<PressureSensor>& sensors,
+                                       const std::vector<BasicPressureSensor<D>>& sensors,
                                        const std::vector<std::string>& names,
                                        const std::vector<std::vector<double>>& columns) {
   nlohmann::json out = nlohmann::json::array();
   const std::vector<double>* time = find_column(names, columns, "time");
+  auto point = [](Vec<D> q) {
+    nlohmann::json a = nlohmann::json::array();
+    for (int k = 0; k < D; ++k) a.push_back(component(q, k));
+    return a;
+  };
   for (std::size_t k = 0; k < probes.size() && k < sensors.size(); ++k) {
-    const PressureSensor& s = sensors[k];
+    const BasicPressureSensor<D>& s = sensors[k];
     const std::string column = "p:" + probes[k].name;
     out.push_back({{"name", probes[k].name},
                    {"column", column},
-                   {"from", {s.from.x, s.from.y}},
-                   {"to", {s.to.x, s.to.y}},
+                   {"from", point(s.from)},
+                   {"to", point(s.to)},
                    {"face_length_m", s.face ? norm(s.to - s.from) : 0.0},
                    {"impact_peak", impact_peak_json(time, find_column(names, columns, column))}});
   }
   return out;
 }
+
+template nlohmann::json pressure_probes_summary<2>(const std::vector<PressureProbeSpec>&,
+                                                   const std::vector<BasicPressureSensor<2>>&,
+                                                   const std::vector<std::string>&,
+                                                   const std::vector<std::vector<double>>&);
+template nlohmann::json pressure_probes_summary<3>(const std::vector<PressureProbeSpec>&,
+                                                   const std::vector<BasicPressureSensor<3>>&,
+                                                   const std::vector<std::string>&,
+                                                   const std::vector<std::vector<double>>&);
 
 }  // namespace sloshsph

@@ -124,14 +124,15 @@ struct SampledSeries {
 };
 
 // Steady-state response (response.hpp) for periodic excitation; null for other runs.
-nlohmann::json analyse_response(const CaseSpec& spec, const Simulation& sim, const SampledSeries& series,
+template <int D>
+nlohmann::json analyse_response(const CaseSpec& spec, const BasicSimulation<D>& sim, const SampledSeries& series,
                                 const std::string& dir) {
   const ExcitationSpec& e = spec.excitation;
   if ((e.type != ExcitationType::harmonic && e.type != ExcitationType::pitch) || !(e.omega > 0.0) ||
       series.columns.empty())
     return nullptr;
   std::vector<std::string> names, units;
-  for (const Column& c : sim.columns()) {
+  for (const BasicColumn<D>& c : sim.columns()) {
     names.push_back(c.name);
     units.push_back(c.unit);
   }
@@ -152,7 +153,8 @@ struct Snapshots {
   bool walls;
   PvdIndex index;
   int count = 0;
-  void write(const Particles& p, double time) {
+  template <int D>
+  void write(const BasicParticles<D>& p, double time) {
     char name[64];
     std::snprintf(name, sizeof name, "particles/particles_%06d.vtu", count++);
     write_vtu((fs::path(dir) / name).string(), p, walls);
@@ -208,7 +210,8 @@ std::string read_text_file(const fs::path& path, const std::string& what) {
 }
 
 // checkpoint.bin: the case it belongs to, the simulation, then the run's progress.
-void write_checkpoint(const Simulation& sim, const RunProgress& progress, const RunFiles& files, double wall_now) {
+template <int D>
+void write_checkpoint(const BasicSimulation<D>& sim, const RunProgress& progress, const RunFiles& files, double wall_now) {
   StateWriter w;
   w.text("case", read_text_file(fs::path(files.dir) / "case.toml", "case.toml of the run"));
   sim.save_state(w);
@@ -249,22 +252,39 @@ RunProgress read_progress(StateReader& r, Snapshots& snaps) {
   return p;
 }
 
-std::vector<std::string> column_names(const Simulation& sim) {
+template <int D>
+std::vector<std::string> column_names(const BasicSimulation<D>& sim) {
   std::vector<std::string> names;
-  for (const Column& c : sim.columns()) names.push_back(c.name);
+  for (const BasicColumn<D>& c : sim.columns()) names.push_back(c.name);
   return names;
 }
 
-int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress& progress, const RunOptions& options);
+template <int D>
+int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, RunProgress& progress,
+             const RunOptions& options);
+
+template <int D>
+int run_case_in(const CaseSpec& spec, const RunOptions& options);
+template <int D>
+int resume_run_in(const std::string& dir, const CaseSpec& spec, StateReader& reader,
+                  std::unique_ptr<RunDirectoryLock> lock, const RunOptions& options);
 
 }  // namespace
 
 int run_case(const CaseSpec& spec, const RunOptions& options) {
+  if (spec.tank.dimensions == 3) return run_case_in<3>(spec, options);
+  return run_case_in<2>(spec, options);
+}
+
+namespace {
+
+template <int D>
+int run_case_in(const CaseSpec& spec, const RunOptions& options) {
   RunFiles files;
   files.dir = options.out_dir.empty() ? (fs::path("out") / spec.name).string() : options.out_dir;
   check_directory(files, options.force);
   // Everything that can reject the case happens before the directory is touched.
-  Simulation sim(spec);
+  BasicSimulation<D> sim(spec);
   prepare_directory(files, options.force);
   for (const std::string& w : sim.scene().warnings) std::fprintf(stderr, "sloshsph: warning: %s\n", w.c_str());
   write_file_atomic((fs::path(files.dir) / "case.toml").string(), resolved_case_toml(spec));
@@ -286,6 +306,8 @@ int run_case(const CaseSpec& spec, const RunOptions& options) {
   return run_loop(spec, sim, files, progress, options);
 }
 
+}  // namespace
+
 int resume_run(const std::string& dir, const RunOptions& options) {
   const fs::path case_path = fs::path(dir) / "case.toml";
   const fs::path checkpoint = fs::path(dir) / "checkpoint.bin";
@@ -305,7 +327,17 @@ int resume_run(const std::string& dir, const RunOptions& options) {
   StateReader reader(read_text_file(checkpoint, "checkpoint"), checkpoint.string());
   if (reader.text("case") != case_text)
     throw InputError(case_path.string(), "", "case.toml changed since the checkpoint was written; refusing to resume");
-  Simulation sim(spec, SimulationStart::for_checkpoint);
+  if (spec.tank.dimensions == 3) return resume_run_in<3>(dir, spec, reader, std::move(lock), options);
+  return resume_run_in<2>(dir, spec, reader, std::move(lock), options);
+}
+
+namespace {
+
+template <int D>
+int resume_run_in(const std::string& dir, const CaseSpec& spec, StateReader& reader,
+                  std::unique_ptr<RunDirectoryLock> lock, const RunOptions& options) {
+  const fs::path checkpoint = fs::path(dir) / "checkpoint.bin";
+  BasicSimulation<D> sim(spec, SimulationStart::for_checkpoint);
   sim.load_state(reader);
   RunFiles files;
   files.lock = std::move(lock);
@@ -334,12 +366,11 @@ int resume_run(const std::string& dir, const RunOptions& options) {
   return run_loop(spec, sim, files, progress, options);
 }
 
-namespace {
-
 // A warning for each of the first steps whose pressure solve found a block of fluid that no p = 0
 // condition reaches and set it to p = 0 (IsphScheme::pin_unanchored_blocks); summary.json counts
 // them all.
-void warn_pinned(const Simulation& sim) {
+template <int D>
+void warn_pinned(const BasicSimulation<D>& sim) {
   constexpr std::size_t kWarnings = 10;
   if (sim.last_step_pinned() == 0 || sim.pinned_steps() > kWarnings) return;
   std::fprintf(stderr,
@@ -349,7 +380,9 @@ void warn_pinned(const Simulation& sim) {
                sim.pinned_steps() == kWarnings ? " (further cases are counted in summary.json, not shown)" : "");
 }
 
-int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress& progress, const RunOptions& options) {
+template <int D>
+int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, RunProgress& progress,
+             const RunOptions& options) {
   const std::string& dir = files.dir;
   const double counted_since = sim.time();
   const auto start = std::chrono::steady_clock::now();
@@ -396,15 +429,22 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
     status = "failed";
     failure = e.what();
     code = kExitRunFailed;
-    write_sample();  // the last good state
-    if (snapshots) files.snaps->write(sim.particles(), sim.time());
+    // The state the failure was found in (the step that failed has run: it may hold the
+    // non-finite values that failed it). A sample of it that fails in turn must not lose the
+    // summary: its reason is added to the failure's.
+    try {
+      write_sample();
+      if (snapshots) files.snaps->write(sim.particles(), sim.time());
+    } catch (const std::exception& again) {
+      failure += std::string("; the failed state could not be sampled: ") + again.what();
+    }
   }
   bar.finish(sim.time(), sim.steps());
   const double wall = elapsed();
   if (status == "completed") fs::remove(fs::path(dir) / "checkpoint.bin");
   const SampledSeries& series = progress.series;
   nlohmann::json& meta = files.meta;
-  const Particles& p = sim.particles();
+  const BasicParticles<D>& p = sim.particles();
   const double total_particles = static_cast<double>(p.size() + sim.leaked());
   nlohmann::json s;
   s["status"] = status;
@@ -429,8 +469,14 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["h_m"] = sim.scene().h;
   s["dt_s"] = spec.time.dt;
   s["dt_adaptive"] = spec.time.adaptive;
-  s["fluid_mass_kg_per_m"] = sim.scene().initial_fluid_mass;
-  s["final_fluid_mass_kg_per_m"] = sim.fluid_mass();
+  if constexpr (D == 2) {
+    s["fluid_mass_kg_per_m"] = sim.scene().initial_fluid_mass;
+    s["final_fluid_mass_kg_per_m"] = sim.fluid_mass();
+  } else {
+    s["dimensions"] = 3;
+    s["fluid_mass_kg"] = sim.scene().initial_fluid_mass;
+    s["final_fluid_mass_kg"] = sim.fluid_mass();
+  }
   // Computed once at the start (run_case), so no input error can surface after the directory exists.
   s["omega1_linear_rad_s"] = sim.linear_omega();
   if (spec.excitation.type != ExcitationType::none) s["excitation_omega_rad_s"] = spec.excitation.omega;
@@ -443,7 +489,7 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   s["memory_bytes_per_particle_by_part"] = by_part;
   s["peak_resident_memory_bytes"] = peak_resident_bytes();
   nlohmann::json units = nlohmann::json::object();
-  for (const Column& c : sim.columns()) units[c.name] = c.unit;
+  for (const BasicColumn<D>& c : sim.columns()) units[c.name] = c.unit;
   s["columns"] = units;
   s["version"] = kVersion;
   s["git_revision"] = kGitRevision;
@@ -499,9 +545,11 @@ int run_loop(const CaseSpec& spec, Simulation& sim, RunFiles& files, RunProgress
   if (!sim.scene().warnings.empty()) s["warnings"] = sim.scene().warnings;
   if (sim.leaked() > 0) {
     nlohmann::json leaks = nlohmann::json::array();
-    for (const LeakRecord& l : sim.leaks()) {
+    for (const BasicLeakRecord<D>& l : sim.leaks()) {
       if (leaks.size() >= 100) break;
-      leaks.push_back({{"time_s", l.time}, {"id", l.id}, {"x", l.position.x}, {"y", l.position.y}});
+      nlohmann::json leak = {{"time_s", l.time}, {"id", l.id}, {"x", l.position.x}, {"y", l.position.y}};
+      if constexpr (D == 3) leak["z"] = l.position.z;
+      leaks.push_back(leak);
     }
     s["leaks_first_100"] = leaks;
   }

@@ -10,6 +10,7 @@
 #include "sloshsph/linear/closed_form.hpp"
 #include "sloshsph/linear/modal.hpp"
 #include "sloshsph/linear/rectangular.hpp"
+#include "sloshsph/geometry/prism_tank.hpp"
 #include "sloshsph/observe/particle_spacing.hpp"
 #include "sloshsph/observe/probes.hpp"
 #include "sloshsph/physics/wall_contact.hpp"
@@ -20,16 +21,29 @@ namespace sloshsph {
 
 namespace {
 
-// A pressure probe's reading: a point, or the mean over its face sampled every dp/4.
-template <class K>
-double read_pressure_probe(const K& k, const Particles& p, const CellGrid& grid, const PressureSensor& sensor,
-                           double dp) {
-  if (!sensor.face) return pressure_at(k, p, grid, sensor.from);
-  return pressure_on_face(k, p, grid, sensor.from, sensor.to, 0.25 * dp);
+// A pressure probe's reading: a point, or the mean over its face sampled every dp/4 (2D).
+template <class K, int D>
+double read_pressure_probe(const K& k, const BasicParticles<D>& p, const BasicCellGrid<D>& grid,
+                           const BasicPressureSensor<D>& sensor, double dp) {
+  if constexpr (D == 2)
+    if (sensor.face) return pressure_on_face(k, p, grid, sensor.from, sensor.to, 0.25 * dp);
+  (void)dp;
+  return pressure_at(k, p, grid, sensor.from);
+}
+
+// A point for messages: "(x, y)" or "(x, y, z)".
+template <int D>
+std::string format_point(Vec<D> p) {
+  std::ostringstream m;
+  m << "(" << p.x << ", " << p.y;
+  if constexpr (D == 3) m << ", " << p.z;
+  m << ")";
+  return m.str();
 }
 
 }  // namespace
 
+// In 3D, too, the first mode of the section (along x): the (1, 0) mode of a box.
 double first_sloshing_omega(const CaseSpec& spec) {
   if (spec.tank.shape == "rectangle")
     return rectangular_sloshing_omega(spec.tank.length, spec.fill.depth, spec.fluid.gravity);  // exact
@@ -56,9 +70,10 @@ CaseSpec resolve_case(CaseSpec spec) {
 
 // A function-try-block: the checks made while the scene and the excitation are built (fill
 // depth, screen geometry, noise band, ...) name their key; here they get the case file and line.
-Simulation::Simulation(const CaseSpec& spec, SimulationStart start) try
+template <int D>
+BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start) try
     : spec_(spec),
-      scene_(build_scene(spec)),
+      scene_(build_scene_in<D>(spec)),
       container_(*scene_.tank, container_grid(), (spec.particles.wall_layers + 2) * spec.particles.dp),
       base_(spec.excitation, spec.time.end),
       scheme_(spec, scene_.h),
@@ -70,7 +85,7 @@ Simulation::Simulation(const CaseSpec& spec, SimulationStart start) try
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   start_plates();
-  scheme_.initialise(scene_.particles, frame_force(spec_.fluid.gravity, base_.at(0.0)));
+  scheme_.initialise(scene_.particles, frame_of(base_.at(0.0)));
   if (start == SimulationStart::settled) settle();
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
   if (spec_.structure) {
@@ -86,31 +101,38 @@ Simulation::Simulation(const CaseSpec& spec, SimulationStart start) try
 
 // The plates' wall particles become moving walls. They settle with the fluid (time.settle): a
 // plate under a standing load starts at t = 0 deflected, at rest.
-void Simulation::start_plates() {
-  if (scene_.plates.empty()) return;
-  Particles& p = scene_.particles;
-  p.wall_motion_velocity.assign(p.n_wall(), Vec2{});
-  p.wall_motion_acceleration.assign(p.n_wall(), Vec2{});
-  for (std::size_t k = 0; k < scene_.plates.size(); ++k) {
-    plates_.emplace_back(scene_.plates[k], scene_.plate_first[k] - p.n_fluid);
-    plates_.back().place(p);
+template <int D>
+void BasicSimulation<D>::start_plates() {
+  if constexpr (D == 2) {
+    if (scene_.plates.empty()) return;
+    Particles& p = scene_.particles;
+    p.wall_motion_velocity.assign(p.n_wall(), Vec2{});
+    p.wall_motion_acceleration.assign(p.n_wall(), Vec2{});
+    for (std::size_t k = 0; k < scene_.plates.size(); ++k) {
+      plates_.emplace_back(scene_.plates[k], scene_.plate_first[k] - p.n_fluid);
+      plates_.back().place(p);
+    }
+    acc_plate_force_.assign(plates_.size(), Vec2{});
   }
-  acc_plate_force_.assign(plates_.size(), Vec2{});
 }
 
 // After each fluid step (staggered, run/plate_coupling.hpp): the fluid's face pressures load the
 // plates, which move to t + dt and carry their wall particles with them.
-void Simulation::advance_plates(double dt, const FrameForce& frame) {
-  Particles& p = scene_.particles;
-  const FrameForce before = frame_force(spec_.fluid.gravity, tank_motion());
-  for (std::size_t k = 0; k < plates_.size(); ++k) {
-    acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
-    plates_[k].advance(p, dt, frame);
-    plates_[k].keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, dt, time_ + dt);
+template <int D>
+void BasicSimulation<D>::advance_plates(double dt, const FrameForce& frame) {
+  if constexpr (D == 2) {
+    Particles& p = scene_.particles;
+    const FrameForce before = frame_force(spec_.fluid.gravity, tank_motion());
+    for (std::size_t k = 0; k < plates_.size(); ++k) {
+      acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
+      plates_[k].advance(p, dt, frame);
+      plates_[k].keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, dt, time_ + dt);
+    }
   }
 }
 
-BaseMotion Simulation::tank_motion() const {
+template <int D>
+BaseMotion BasicSimulation<D>::tank_motion() const {
   BaseMotion m = base_.at(time_);
   if (!structure_) return m;
   // The tank is fixed to the structure: ground motion plus the structure's relative motion.
@@ -120,44 +142,70 @@ BaseMotion Simulation::tank_motion() const {
   return m;
 }
 
-void Simulation::add_column(std::string name, std::string unit,
-                            std::function<double(const Simulation&, const SampleBasis&)> value) {
+template <int D>
+void BasicSimulation<D>::add_column(std::string name, std::string unit,
+                                    std::function<double(const BasicSimulation&, const SampleBasis&)> value) {
   columns_.push_back({std::move(name), std::move(unit), std::move(value)});
 }
 
 // The columns of timeseries.csv, each with its value (docs/case-format.md, "Output"). Forces are
 // means over the interval since the last sample; W_base is the base's work on the fluid since t = 0.
-void Simulation::build_columns() {
-  using S = const Simulation&;
+template <int D>
+void BasicSimulation<D>::build_columns() {
+  using S = const BasicSimulation&;
   using B = const SampleBasis&;
+  // 2D: per metre of breadth; 3D: the whole tank.
+  const std::string energy_unit = D == 2 ? "J/m" : "J";
+  const Vec2 dir = spec_.excitation.direction;  // 3D: the base moves along it (x_base is its x part)
+  (void)dir;
   columns_.clear();
   add_column("time", "s", [](S s, B) { return s.time_; });
-  add_column("x_base", "m", [](S, B b) { return b.motion.displacement.x; });
-  add_column("v_base", "m/s", [](S, B b) { return b.motion.velocity.x; });
-  add_column("a_base", "m/s^2", [](S, B b) { return b.motion.acceleration.x; });
+  if constexpr (D == 2) {
+    add_column("x_base", "m", [](S, B b) { return b.motion.displacement.x; });
+    add_column("v_base", "m/s", [](S, B b) { return b.motion.velocity.x; });
+    add_column("a_base", "m/s^2", [](S, B b) { return b.motion.acceleration.x; });
+  } else {
+    add_column("x_base", "m", [dir](S, B b) { return b.motion.displacement.x * dir.x; });
+    add_column("y_base", "m", [dir](S, B b) { return b.motion.displacement.x * dir.y; });
+    add_column("v_base", "m/s", [dir](S, B b) { return b.motion.velocity.x * dir.x; });
+    add_column("v_base_y", "m/s", [dir](S, B b) { return b.motion.velocity.x * dir.y; });
+    add_column("a_base", "m/s^2", [dir](S, B b) { return b.motion.acceleration.x * dir.x; });
+    add_column("a_base_y", "m/s^2", [dir](S, B b) { return b.motion.acceleration.x * dir.y; });
+  }
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k)
     add_column("eta:" + spec_.gauges[k].name, "m", [k](S s, B) { return s.surface_height(k) - s.gauge_datum_[k]; });
   for (std::size_t k = 0; k < spec_.pressure_probes.size(); ++k)
     add_column("p:" + spec_.pressure_probes[k].name, "Pa", [k](S, B b) { return b.probe_pressure[k]; });
-  for (std::size_t k = 0; k < spec_.fronts.size(); ++k)
-    add_column("front:" + spec_.fronts[k].name, "m", [k](S s, B) {
-      const FrontProbeSpec& f = s.spec_.fronts[k];
-      const double dp = s.spec_.particles.dp;
-      return front_position(s.scene_.particles, s.scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp, f.rightward, dp);
-    });
+  if constexpr (D == 2) {
+    for (std::size_t k = 0; k < spec_.fronts.size(); ++k)
+      add_column("front:" + spec_.fronts[k].name, "m", [k](S s, B) {
+        const FrontProbeSpec& f = s.spec_.fronts[k];
+        const double dp = s.spec_.particles.dp;
+        return front_position(s.scene_.particles, s.scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp, f.rightward, dp);
+      });
+  }
   for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
     if (screens_.elements[e].count == 0) continue;  // explicit slats are walls: their force is in F_w
     auto mean_force = [e](S s) { return s.acc_dt_ > 0.0 ? s.acc_screen_force_[e] / s.acc_dt_ : Vec2{}; };
     add_column("F_screen:" + screens_.elements[e].name, "N/m", [mean_force](S s, B) { return mean_force(s).x; });
     add_column("F_screen_y:" + screens_.elements[e].name, "N/m", [mean_force](S s, B) { return mean_force(s).y; });
   }
-  add_column("F_w", "N/m", [](S, B b) { return b.wall_force.x; });
-  add_column("F_sw", "N/m", [](S, B b) { return b.wall_force.x - b.fluid_mass * b.base_acceleration; });
-  add_column("F_wy", "N/m", [](S, B b) { return b.wall_force.y; });
-  add_column("W_base", "J/m", [](S s, B) { return s.work_on_fluid_; });
-  add_column("fluid_mass", "kg/m", [](S, B b) { return b.fluid_mass; });
-  add_column("E_kin", "J/m", [](S, B b) { return b.kinetic_energy; });
-  add_column("E_pot", "J/m", [](S, B b) { return b.potential_energy; });
+  // F_sw: the sloshing part, the wall force less the fluid's mass times the base acceleration.
+  if constexpr (D == 2) {
+    add_column("F_w", "N/m", [](S, B b) { return b.wall_force.x; });
+    add_column("F_sw", "N/m", [](S, B b) { return b.wall_force.x - b.fluid_mass * b.base_acceleration; });
+    add_column("F_wy", "N/m", [](S, B b) { return b.wall_force.y; });
+  } else {
+    add_column("F_w", "N", [](S, B b) { return b.wall_force.x; });
+    add_column("F_sw", "N", [dir](S, B b) { return b.wall_force.x - b.fluid_mass * b.base_acceleration * dir.x; });
+    add_column("F_wy", "N", [](S, B b) { return b.wall_force.y; });
+    add_column("F_sw_y", "N", [dir](S, B b) { return b.wall_force.y - b.fluid_mass * b.base_acceleration * dir.y; });
+    add_column("F_wz", "N", [](S, B b) { return b.wall_force.z; });
+  }
+  add_column("W_base", energy_unit, [](S s, B) { return s.work_on_fluid_; });
+  add_column("fluid_mass", D == 2 ? "kg/m" : "kg", [](S, B b) { return b.fluid_mass; });
+  add_column("E_kin", energy_unit, [](S, B b) { return b.kinetic_energy; });
+  add_column("E_pot", energy_unit, [](S, B b) { return b.potential_energy; });
   add_column("leaked", "1", [](S s, B) { return static_cast<double>(s.leaks_.size()); });
   add_column("max_speed", "m/s", [](S s, B) { return s.max_speed_; });
   add_column("dt", "s", [](S s, B) { return s.last_dt_; });
@@ -210,25 +258,27 @@ void Simulation::build_columns() {
 // scheme (the free-surface rows carry p = 0 half a spacing below the surface they stand
 // for); settling removes the start-up ripple that would otherwise sit on top of small
 // sloshing amplitudes. Time, outputs and leak counts start after it.
-void Simulation::settle() {
+template <int D>
+void BasicSimulation<D>::settle() {
   const double duration = spec_.time.settle;
   if (duration <= 0.0) return;
   const double tau = 0.1 * duration;
-  StepInput in;
-  in.frame = frame_force(spec_.fluid.gravity, base_.at(0.0));
-  Particles& p = scene_.particles;
+  BasicStepInput<D> in;
+  in.frame = frame_of(base_.at(0.0));
+  BasicParticles<D>& p = scene_.particles;
   for (double t = 0.0; t < duration - 1e-12;) {
     in.dt = std::min(spec_.time.dt, duration - t);
     if (const auto stable = scheme_.stable_dt(p, in.frame)) in.dt = std::min(in.dt, *stable);
     scheme_.step(p, in);
     const double factor = std::exp(-in.dt / tau);
     for (std::size_t i = 0; i < p.n_fluid; ++i) p.velocity[i] = factor * p.velocity[i];
-    for (PlateCoupling& plate : plates_) {  // the plates settle with the fluid, damped alike
-      plate.fluid_force(p, in.frame, spec_.fluid.density);
-      plate.advance(p, in.dt, in.frame);
-      plate.keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, in.dt, -1.0);
-      plate.damp(p, factor);
-    }
+    if constexpr (D == 2)
+      for (PlateCoupling& plate : plates_) {  // the plates settle with the fluid, damped alike
+        plate.fluid_force(p, in.frame, spec_.fluid.density);
+        plate.advance(p, in.dt, in.frame);
+        plate.keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, in.dt, -1.0);
+        plate.damp(p, factor);
+      }
     t += in.dt;
     // A settle that blows up fails the run here, with what and where, before a runaway
     // particle reaches the neighbour search (found: the thesis free surface at dp = 0.1 m).
@@ -256,7 +306,8 @@ void Simulation::settle() {
   for (std::size_t i = 0; i < p.n_fluid; ++i) max_speed_ = std::max(max_speed_, norm(p.velocity[i]));
 }
 
-double Simulation::next_dt() const {
+template <int D>
+double BasicSimulation<D>::next_dt() const {
   double dt = spec_.time.dt;
   if (spec_.time.adaptive) {
     // Thesis 2.6.3.2: dt <= min(0.1 dp / u_max, 0.1 dp^2 / nu) with the factor time.cfl;
@@ -265,16 +316,17 @@ double Simulation::next_dt() const {
     const double cfl = spec_.time.cfl;
     if (max_speed_ > 0.0) dt = std::min(dt, cfl * dp / max_speed_);
     if (spec_.fluid.viscosity > 0.0) dt = std::min(dt, cfl * dp * dp / spec_.fluid.viscosity);
-    const Vec2 body = frame_force(spec_.fluid.gravity, tank_motion()).uniform;
+    const Vec<D> body = frame_of(tank_motion()).uniform;
     if (norm(body) > 0.0) dt = std::min(dt, 0.25 * std::sqrt(scene_.h / norm(body)));
   }
   // An explicit (weakly compressible) scheme takes its own CFL step; time.dt caps it.
-  if (const auto stable = scheme_.stable_dt(scene_.particles, frame_force(spec_.fluid.gravity, tank_motion())))
+  if (const auto stable = scheme_.stable_dt(scene_.particles, frame_of(tank_motion())))
     dt = std::min(dt, *stable);
   return std::min(dt, spec_.time.end - time_);
 }
 
-void Simulation::step() {
+template <int D>
+void BasicSimulation<D>::step() {
   const double dt = next_dt();
   if (!(dt > 0.0)) return;
   const BaseMotion before = tank_motion();
@@ -289,16 +341,17 @@ void Simulation::step() {
     structure_->advance(dt, sloshing_force_, base_.at(time_ + dt).acceleration.x);
     mid.acceleration.x = 0.5 * (before.acceleration.x + structure_->absolute_acceleration());
   }
-  StepInput in;
+  BasicStepInput<D> in;
   in.dt = dt;
-  in.frame = frame_force(spec_.fluid.gravity, mid);
-  if (!screens_.position.empty()) {
-    // Thesis eqs. 2.25-2.28 with the fluid state at the start of the step.
-    in.extra = [this](const Particles& p, std::vector<Vec2>& a) {
-      screen_drag(screens_, p, p.velocity, spec_.fluid.density, spec_.fluid.density * spec_.fluid.viscosity,
-                  screen_work_, a, screen_loads_);
-    };
-  }
+  in.frame = frame_of(mid);
+  if constexpr (D == 2)
+    if (!screens_.position.empty()) {
+      // Thesis eqs. 2.25-2.28 with the fluid state at the start of the step.
+      in.extra = [this](const Particles& p, std::vector<Vec2>& a) {
+        screen_drag(screens_, p, p.velocity, spec_.fluid.density, spec_.fluid.density * spec_.fluid.viscosity,
+                    screen_work_, a, screen_loads_);
+      };
+    }
   try {
     scheme_.step(scene_.particles, in);
   } catch (...) {
@@ -307,25 +360,25 @@ void Simulation::step() {
   }
 
   BaseMotion after = base_.at(time_ + dt);
-  if (!plates_.empty()) advance_plates(dt, frame_force(spec_.fluid.gravity, after));
+  if (!plates_.empty()) advance_plates(dt, frame_force(spec_.fluid.gravity, after));  // 2D only
   if (structure_) {
     after.displacement.x += structure_->displacement();
     after.velocity.x += structure_->velocity();
   }
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
-  Vec2 wall_force = scheme_.diagnostics().wall_force;
+  Vec<D> wall_force = scheme_.diagnostics().wall_force;
   if (spec_.scheme.pair_contact)  // before the wall contact, which then has the last word at the walls
     pair_contacts_ += pair_contact_.apply(scene_.particles, scheme_.neighbours());
   if (spec_.scheme.wall_contact) {
-    const WallContact contact =
-        keep_fluid_in_tank(scene_.particles, container_, *scene_.tank, spec_.particles.dp, container_grid(), dt);
+    const BasicWallContact<D> contact = wall_contact(dt);
     wall_contacts_ += contact.corrected;
     wall_force += contact.force_on_fluid;
   }
-  for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
-    wall_force += screen_loads_[e].force_on_fluid;
-    acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
-  }
+  if constexpr (D == 2)
+    for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
+      wall_force += screen_loads_[e].force_on_fluid;
+      acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
+    }
   if (structure_) {
     // F_w is the force of the walls ON the fluid (F_wy > 0 carries the weight): the fluid
     // pushes the tank with -F_w. Sloshing part for the next structure step (thesis 2.6.3.1).
@@ -336,7 +389,8 @@ void Simulation::step() {
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
   acc_base_acceleration_ += dt * mid.acceleration.x;
-  work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
+  if constexpr (D == 2) work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
+  else work_on_fluid_ += dot(wall_force, along_direction(after.displacement - before.displacement, spec_.excitation.direction));
 
   ++steps_;
   const bool fixed = !spec_.time.adaptive && spec_.scheme.type == "isph";
@@ -351,14 +405,15 @@ void Simulation::step() {
   remove_leaked();
 }
 
-void Simulation::remove_leaked() {
-  Particles& p = scene_.particles;
+template <int D>
+void BasicSimulation<D>::remove_leaked() {
+  BasicParticles<D>& p = scene_.particles;
   const double limit = -0.5 * spec_.particles.dp;
   std::vector<std::uint8_t> out(p.n_fluid, 0);
   bool any = false;
 #pragma omp parallel for reduction(|| : any) schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    if (container_(p.position[i]) < limit) {
+    if (container_distance(p.position[i]) < limit) {
       out[i] = 1;
       any = true;
     }
@@ -374,33 +429,33 @@ void Simulation::remove_leaked() {
     std::ostringstream m;
     m << leaks_.size() << " fluid particles (" << 100.0 * fraction << "% of " << scene_.initial_fluid_count
       << ") have left the tank by t = " << time_ << " s, more than run.max_leaked_fraction = "
-      << spec_.run.max_leaked_fraction << "; the first (id " << first.id << ") at t = " << first.time << " s near ("
-      << first.position.x << ", " << first.position.y << ") m";
+      << spec_.run.max_leaked_fraction << "; the first (id " << first.id << ") at t = " << first.time << " s near "
+      << format_point<D>(first.position) << " m";
     throw RunFailure(m.str());
   }
 }
 
-void Simulation::check_state() const {
+template <int D>
+void BasicSimulation<D>::check_state() const {
   std::ostringstream when;
   when << "at t = " << time_ << " s (step " << steps_ << ")";
   check_state(when.str());
 }
 
-void Simulation::check_state(const std::string& when) const {
-  const Particles& p = scene_.particles;
+template <int D>
+void BasicSimulation<D>::check_state(const std::string& when) const {
+  const BasicParticles<D>& p = scene_.particles;
   std::size_t bad = p.size();
 #pragma omp parallel for reduction(min : bad) schedule(static)
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool ok = std::isfinite(p.position[i].x) && std::isfinite(p.position[i].y) && std::isfinite(p.velocity[i].x) &&
-                    std::isfinite(p.velocity[i].y) && std::isfinite(p.pressure[i]);
+    const bool ok = is_finite(p.position[i]) && is_finite(p.velocity[i]) && std::isfinite(p.pressure[i]);
     if (!ok) bad = std::min(bad, i);
   }
   if (bad < p.size()) {
     std::ostringstream m;
     m << "non-finite value " << when << " in "
-      << (p.is_fluid(bad) ? "fluid" : "wall") << " particle id " << p.id[bad] << " at (" << p.position[bad].x << ", "
-      << p.position[bad].y << ") m: velocity (" << p.velocity[bad].x << ", " << p.velocity[bad].y << "), pressure "
-      << p.pressure[bad] << " Pa";
+      << (p.is_fluid(bad) ? "fluid" : "wall") << " particle id " << p.id[bad] << " at " << format_point<D>(p.position[bad])
+      << " m: velocity " << format_point<D>(p.velocity[bad]) << ", pressure " << p.pressure[bad] << " Pa";
     throw RunFailure(m.str());
   }
   if (max_speed_ > speed_limit_) {
@@ -409,41 +464,55 @@ void Simulation::check_state(const std::string& when) const {
       if (norm(p.velocity[i]) > norm(p.velocity[fast])) fast = i;
     std::ostringstream m;
     m << "speed " << max_speed_ << " m/s " << when << " exceeds the bound "
-      << speed_limit_ << " m/s (run.max_speed_factor x the fill speed scale), fluid particle id " << p.id[fast] << " at ("
-      << p.position[fast].x << ", " << p.position[fast].y << ") m";
+      << speed_limit_ << " m/s (run.max_speed_factor x the fill speed scale), fluid particle id " << p.id[fast] << " at "
+      << format_point<D>(p.position[fast]) << " m";
     throw RunFailure(m.str());
   }
 }
 
-double Simulation::surface_height(std::size_t gauge) const {
-  const double x = spec_.gauges[gauge].x;
-  const double floor = scene_.tank->bottom_at(x);
-  return with_kernel(spec_.particles.kernel, scene_.h,
-                     [&](const auto& k) { return free_surface_height(k, scene_.particles, x, floor, c_full_); });
+template <int D>
+double BasicSimulation<D>::surface_height(std::size_t gauge) const {
+  const GaugeSpec& g = spec_.gauges[gauge];
+  const double floor = scene_.tank->bottom_at(g.x);
+  if constexpr (D == 2) {
+    return with_kernel(spec_.particles.kernel, scene_.h,
+                       [&](const auto& k) { return free_surface_height(k, scene_.particles, g.x, floor, c_full_); });
+  } else {
+    return with_kernel(
+        spec_.particles.kernel, scene_.h,
+        [&](const auto& k) { return free_surface_height(k, scene_.particles, Vec3{g.x, g.across, 0.0}, floor, c_full_); },
+        3);
+  }
 }
 
-double Simulation::probe_pressure(std::size_t probe) const {
-  CellGrid grid;
+template <int D>
+double BasicSimulation<D>::probe_pressure(std::size_t probe) const {
+  BasicCellGrid<D> grid;
   grid.build(scene_.particles.position, 0, scene_.particles.size(), 2.0 * scene_.h);
-  const PressureSensor& sensor = scene_.pressure_sensors[probe];
-  return with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
-    return read_pressure_probe(k, scene_.particles, grid, sensor, spec_.particles.dp);
-  });
+  const BasicPressureSensor<D>& sensor = scene_.pressure_sensors[probe];
+  return with_kernel(
+      spec_.particles.kernel, scene_.h,
+      [&](const auto& k) { return read_pressure_probe(k, scene_.particles, grid, sensor, spec_.particles.dp); }, D);
 }
 
 // Not const: PlateCoupling::fluid_inside keeps scratch.
-SampleBasis Simulation::sample_basis() {
-  const Particles& p = scene_.particles;
+template <int D>
+typename BasicSimulation<D>::SampleBasis BasicSimulation<D>::sample_basis() {
+  const BasicParticles<D>& p = scene_.particles;
   SampleBasis b;
   if (!spec_.pressure_probes.empty()) {
-    CellGrid grid;
+    BasicCellGrid<D> grid;
     grid.build(p.position, 0, p.size(), 2.0 * scene_.h);
-    with_kernel(spec_.particles.kernel, scene_.h, [&](const auto& k) {
-      for (const PressureSensor& sensor : scene_.pressure_sensors)
-        b.probe_pressure.push_back(read_pressure_probe(k, p, grid, sensor, spec_.particles.dp));
-    });
+    with_kernel(
+        spec_.particles.kernel, scene_.h,
+        [&](const auto& k) {
+          for (const BasicPressureSensor<D>& sensor : scene_.pressure_sensors)
+            b.probe_pressure.push_back(read_pressure_probe(k, p, grid, sensor, spec_.particles.dp));
+        },
+        D);
   }
-  for (PlateCoupling& pl : plates_) b.plate_inside.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
+  if constexpr (D == 2)
+    for (PlateCoupling& pl : plates_) b.plate_inside.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
   b.motion = tank_motion();
   b.fluid_mass = fluid_mass();
   if (acc_dt_ > 0.0) {
@@ -452,13 +521,14 @@ SampleBasis Simulation::sample_basis() {
   }
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     b.kinetic_energy += 0.5 * p.mass * norm2(p.velocity[i]);
-    b.potential_energy += p.mass * spec_.fluid.gravity * (p.position[i].y - scene_.tank->y_bottom);
+    b.potential_energy += p.mass * spec_.fluid.gravity * (component(p.position[i], D - 1) - scene_.tank->y_bottom);
     b.momentum_x += p.mass * p.velocity[i].x;
   }
   return b;
 }
 
-void Simulation::reset_interval_sums() {
+template <int D>
+void BasicSimulation<D>::reset_interval_sums() {
   acc_dt_ = 0.0;
   acc_wall_force_ = {};
   acc_base_acceleration_ = 0.0;
@@ -467,7 +537,8 @@ void Simulation::reset_interval_sums() {
   for (Vec2& f : acc_plate_force_) f = {};
 }
 
-std::vector<double> Simulation::sample() {
+template <int D>
+std::vector<double> BasicSimulation<D>::sample() {
   const SampleBasis basis = sample_basis();
   std::vector<double> values;
   values.reserve(columns_.size());
@@ -476,7 +547,8 @@ std::vector<double> Simulation::sample() {
   return values;
 }
 
-void save_particles(StateWriter& w, const Particles& p) {
+template <int D>
+void save_particles(StateWriter& w, const BasicParticles<D>& p) {
   w.array("particles.position", p.position);
   w.array("particles.velocity", p.velocity);
   w.array("particles.pressure", p.pressure);
@@ -489,20 +561,22 @@ void save_particles(StateWriter& w, const Particles& p) {
   w.value("particles.n_fluid", static_cast<std::uint64_t>(p.n_fluid));
 }
 
-void load_particles(StateReader& r, Particles& p) {
-  p.position = r.array<Vec2>("particles.position");
-  p.velocity = r.array<Vec2>("particles.velocity");
+template <int D>
+void load_particles(StateReader& r, BasicParticles<D>& p) {
+  p.position = r.array<Vec<D>>("particles.position");
+  p.velocity = r.array<Vec<D>>("particles.velocity");
   p.pressure = r.array<double>("particles.pressure");
   p.pressure_back = r.array<double>("particles.pressure_back");
   p.density = r.array<double>("particles.density");
-  p.normal = r.array<Vec2>("particles.normal");
+  p.normal = r.array<Vec<D>>("particles.normal");
   p.id = r.array<std::int32_t>("particles.id");
-  p.wall_motion_velocity = r.array<Vec2>("particles.wall_motion_velocity");
-  p.wall_motion_acceleration = r.array<Vec2>("particles.wall_motion_acceleration");
+  p.wall_motion_velocity = r.array<Vec<D>>("particles.wall_motion_velocity");
+  p.wall_motion_acceleration = r.array<Vec<D>>("particles.wall_motion_acceleration");
   p.n_fluid = static_cast<std::size_t>(r.value<std::uint64_t>("particles.n_fluid"));
 }
 
-void Simulation::save_state(StateWriter& w) const {
+template <int D>
+void BasicSimulation<D>::save_state(StateWriter& w) const {
   save_particles(w, scene_.particles);
   scheme_.save_state(w);
   w.value("sim.time", time_);
@@ -530,7 +604,8 @@ void Simulation::save_state(StateWriter& w) const {
   w.array("sim.acc_plate_force", acc_plate_force_);
 }
 
-void Simulation::load_state(StateReader& r) {
+template <int D>
+void BasicSimulation<D>::load_state(StateReader& r) {
   load_particles(r, scene_.particles);
   scheme_.load_state(r);
   time_ = r.value<double>("sim.time");
@@ -545,7 +620,7 @@ void Simulation::load_state(StateReader& r) {
   if (spec_.scheme.shifting != ShiftingModel::none)
     shifts_limited_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.shifts_limited"));
   acc_dt_ = r.value<double>("sim.acc_dt");
-  acc_wall_force_ = r.value<Vec2>("sim.acc_wall_force");
+  acc_wall_force_ = r.value<Vec<D>>("sim.acc_wall_force");
   acc_base_acceleration_ = r.value<double>("sim.acc_base_acceleration");
   work_on_fluid_ = r.value<double>("sim.work_on_fluid");
   acc_screen_force_ = r.array<Vec2>("sim.acc_screen_force");
@@ -561,5 +636,31 @@ void Simulation::load_state(StateReader& r) {
   for (std::size_t k = 0; k < plates_.size(); ++k) plates_[k].load_state(r, "plate." + std::to_string(k));
   acc_plate_force_ = r.array<Vec2>("sim.acc_plate_force");
 }
+
+template <int D>
+double BasicSimulation<D>::container_distance(Vec<D> p) const {
+  if constexpr (D == 2) return container_(p);
+  else return std::min(container_(in_section(p)), std::min(p.y, scene_.breadth - p.y));
+}
+
+// The wall-contact step (physics/wall_contact.hpp) against the tank: in 2D its section, in 3D the
+// section extruded over the breadth.
+template <int D>
+BasicWallContact<D> BasicSimulation<D>::wall_contact(double dt) {
+  const double dp = spec_.particles.dp;
+  if constexpr (D == 2) {
+    return keep_fluid_in_tank(scene_.particles, container_, *scene_.tank, dp, container_grid(), dt);
+  } else {
+    const TankGeometry& section = *scene_.tank;
+    const double breadth = scene_.breadth;
+    return keep_fluid_in_container<3>(
+        scene_.particles, [this](Vec3 q) { return container_distance(q); },
+        [&section, breadth](Vec3 q) { return container_signed_distance<3>(section, breadth, q); }, dp, container_grid(),
+        dt);
+  }
+}
+
+template class BasicSimulation<2>;
+template class BasicSimulation<3>;
 
 }  // namespace sloshsph

@@ -15,6 +15,7 @@
 #include "sloshsph/physics/excitation.hpp"
 #include "sloshsph/physics/pair_contact.hpp"
 #include "sloshsph/physics/porous.hpp"
+#include "sloshsph/physics/wall_contact.hpp"
 #include "sloshsph/run/plate_coupling.hpp"
 #include "sloshsph/run/structure_coupling.hpp"
 #include "sloshsph/schemes/scheme.hpp"
@@ -33,16 +34,18 @@ double first_sloshing_omega(const CaseSpec& spec);
 // excitation.beta_reference = "thesis".
 double reference_omega(const CaseSpec& spec);
 
-class Simulation;
+template <int D>
+class BasicSimulation;
 
 // What one sample works out once for all its columns: the tank's motion, the means over the
 // interval since the last sample, the fluid's energies and momentum, the pressure probes and the
-// fluid inside each plate.
-struct SampleBasis {
-  BaseMotion motion;
+// fluid inside each plate. Per metre of breadth in 2D (kg/m, N/m, J/m), whole in 3D (kg, N, J).
+template <int D>
+struct BasicSampleBasis {
+  BaseMotion motion;               // along excitation.direction in 3D (physics/excitation.hpp)
   double fluid_mass = 0.0;         // kg/m
-  Vec2 wall_force;                 // N/m, interval mean of the walls' (and screens') force on the fluid
-  double base_acceleration = 0.0;  // m/s^2, interval mean of the frame's acceleration
+  Vec<D> wall_force;               // N/m, interval mean of the walls' (and screens') force on the fluid
+  double base_acceleration = 0.0;  // m/s^2, interval mean of the frame's acceleration (along the direction)
   double kinetic_energy = 0.0, potential_energy = 0.0, momentum_x = 0.0;  // of the fluid, tank frame
   std::vector<double> probe_pressure;  // Pa, each pressure probe (one cell grid for all)
   std::vector<double> plate_inside;    // fluid particles inside each plate
@@ -50,26 +53,36 @@ struct SampleBasis {
 
 // One column of timeseries.csv: its name, its unit, and its value in a sample. Each column is
 // defined once, with its value (Simulation::build_columns), so names and values cannot drift apart.
-struct Column {
+template <int D>
+struct BasicColumn {
   std::string name;
   std::string unit;
-  std::function<double(const Simulation&, const SampleBasis&)> value;
+  std::function<double(const BasicSimulation<D>&, const BasicSampleBasis<D>&)> value;
 };
 
-struct LeakRecord {
+template <int D>
+struct BasicLeakRecord {
   double time = 0.0;
   std::int32_t id = 0;
-  Vec2 position;
+  Vec<D> position;
 };
 
 // How a Simulation begins: with the fluid settled for time.settle (a new run), or unsettled, to
 // be overwritten at once by load_state (a resume: settling would be thrown away).
 enum class SimulationStart { settled, for_checkpoint };
 
-class Simulation {
+// In 2D (Simulation) every feature of a case; in 3D (Simulation3, tank.dimensions = 3) the ISPH
+// scheme, a translation along excitation.direction, gauges and point probes (issue 31): the
+// screens, plates and structure below are 2D only, and the case reader refuses them in 3D.
+template <int D>
+class BasicSimulation {
  public:
+  using Column = BasicColumn<D>;
+  using SampleBasis = BasicSampleBasis<D>;
+  using LeakRecord = BasicLeakRecord<D>;
+
   // `spec` must have been through resolve_case. Throws InputError for a bad geometry.
-  explicit Simulation(const CaseSpec& spec, SimulationStart start = SimulationStart::settled);
+  explicit BasicSimulation(const CaseSpec& spec, SimulationStart start = SimulationStart::settled);
 
   // Advances one time step. Throws RunFailure (non-finite values, speed beyond the bound,
   // more leaked particles than allowed), leaving the last completed state in place.
@@ -84,9 +97,9 @@ class Simulation {
   std::vector<double> sample();
 
   const CaseSpec& spec() const { return spec_; }
-  const Scene& scene() const { return scene_; }
-  const Particles& particles() const { return scene_.particles; }
-  const AnyScheme& scheme() const { return scheme_; }
+  const BasicScene<D>& scene() const { return scene_; }
+  const BasicParticles<D>& particles() const { return scene_.particles; }
+  const BasicAnyScheme<D>& scheme() const { return scheme_; }
   const ScreenParticles& screens() const { return screens_; }
   // The imposed motion of [excitation]; with [structure] the ground motion under the structure.
   const BaseMotionSource& base() const { return base_; }
@@ -121,7 +134,7 @@ class Simulation {
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
 
-  double surface_height(std::size_t gauge) const;  // current free-surface y at gauge k
+  double surface_height(std::size_t gauge) const;  // current free-surface height (y; 3D: z) at gauge k
   double probe_pressure(std::size_t probe) const;  // current pressure at probe k
 
  private:
@@ -132,18 +145,27 @@ class Simulation {
   void remove_leaked();
   // Spacing of the sampled container distance (leak test, first wall-contact test), m.
   double container_grid() const { return 0.5 * spec_.particles.dp; }
+  // The sampled signed distance of the container (leak test, first wall-contact test): in 3D the
+  // section's sampled distance and the end walls.
+  double container_distance(Vec<D> p) const;
+  // The tank-frame body force of a motion of the tank.
+  BasicFrameForce<D> frame_of(const BaseMotion& m) const {
+    return frame_force_in<D>(spec_.fluid.gravity, m, spec_.excitation.direction);
+  }
+  BasicWallContact<D> wall_contact(double dt);
   void start_plates();
   void advance_plates(double dt, const FrameForce& frame);
   void build_columns();
-  void add_column(std::string name, std::string unit, std::function<double(const Simulation&, const SampleBasis&)> value);
+  void add_column(std::string name, std::string unit,
+                  std::function<double(const BasicSimulation&, const SampleBasis&)> value);
   SampleBasis sample_basis();
   void reset_interval_sums();
 
   CaseSpec spec_;
-  Scene scene_;
-  ContainerDistance container_;
+  BasicScene<D> scene_;
+  ContainerDistance container_;  // of the section
   BaseMotionSource base_;
-  AnyScheme scheme_;
+  BasicAnyScheme<D> scheme_;
   // Porous screens (Ergun, Morison): their particles, buffers, and the last step's loads.
   ScreenParticles screens_;
   ScreenDragWork screen_work_;
@@ -160,13 +182,13 @@ class Simulation {
   std::vector<LeakRecord> leaks_;
   std::size_t wall_contacts_ = 0;
   std::size_t pair_contacts_ = 0;
-  PairContactStep pair_contact_;  // scheme.pair_contact
+  BasicPairContactStep<D> pair_contact_;  // scheme.pair_contact
   std::size_t shifts_limited_ = 0;  // scheme.shifting: shifts cut by their cap or a wall, over the run
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
   std::vector<Column> columns_;
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;
-  Vec2 acc_wall_force_;
+  Vec<D> acc_wall_force_;
   double acc_base_acceleration_ = 0.0;
   double work_on_fluid_ = 0.0;  // J/m, integral of F_w dX since t = 0
   // [structure] (thesis 4.2.3): the SDOF carrying the tank, the sloshing force of the last
@@ -179,5 +201,13 @@ class Simulation {
   double sloshing_force_ = 0.0;
   double acc_tld_force_ = 0.0;
 };
+
+extern template class BasicSimulation<2>;
+extern template class BasicSimulation<3>;
+using Simulation = BasicSimulation<2>;
+using Simulation3 = BasicSimulation<3>;
+using Column = BasicColumn<2>;
+using SampleBasis = BasicSampleBasis<2>;
+using LeakRecord = BasicLeakRecord<2>;
 
 }  // namespace sloshsph

@@ -169,7 +169,7 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t r) {
 
 }  // namespace
 
-std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A) {
+std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A, double weak) {
   const std::size_t n = A.rows();
   std::vector<std::uint32_t> parent(n);
   for (std::size_t r = 0; r < n; ++r) parent[r] = static_cast<std::uint32_t>(r);
@@ -179,10 +179,13 @@ std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A) {
     for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) {
       sum += A.value[k];
       if (A.column[k] == r) diagonal = A.value[k];
+    }
+    for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) {
+      if (std::abs(A.value[k]) <= weak * std::abs(diagonal)) continue;  // a link too weak to count
       const std::uint32_t a = find_root(parent, static_cast<std::uint32_t>(r)), b = find_root(parent, A.column[k]);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
-    anchored[r] = std::abs(sum) > 1e-8 * std::abs(diagonal) || diagonal == 0.0;
+    anchored[r] = std::abs(sum) > weak * std::abs(diagonal) || diagonal == 0.0;
   }
   std::vector<char> root_anchored(n, 0);
   for (std::size_t r = 0; r < n; ++r)

@@ -71,11 +71,16 @@ struct BicgstabWork {
 // The rows of blocks of A that no anchored row reaches: A x = b splits into independent blocks (the
 // connected components of the graph of A's entries, in either direction), and a block is singular
 // when none of its rows is anchored, that is when in every row the entries sum to zero
-// (|sum_k A_rk| <= 1e-8 |A_rr|): the pure-Neumann Laplacian of a cluster of fluid that no p = 0
+// (|sum_k A_rk| <= weak |A_rr|): the pure-Neumann Laplacian of a cluster of fluid that no p = 0
 // condition reaches, whose pressure level is undetermined and whose equations, with a right side
-// that does not sum to zero, have no solution. Returns those rows in increasing order (empty when
-// every block is anchored). Serial union-find over the entries: O(entries).
-std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A);
+// that does not sum to zero, have no solution. An entry |A_rk| <= weak |A_rr| does not connect
+// (nor does a row sum that small anchor): a block held to the rest only by such links is nearly
+// singular, and its solution, however well converged, is absurd (found 2026-12-07: SF tank at
+// 44 milli-g, t = 279.785 s, 3 particles at 7e18 Pa after the solve converged to 8e-7; a pair at
+// the edge of the kernel's support gives a coefficient of (1 - q/2)^3, 1e-6 at q = 1.98). Returns
+// those rows in increasing order (empty when every block is anchored). Serial union-find over the
+// entries: O(entries).
+std::vector<std::uint32_t> rows_without_anchor(const SparseRows& A, double weak = 1e-8);
 
 // Solves A x = b from the initial guess in x: BiCGSTAB (van der Vorst 1992) with a right
 // preconditioner, to |b - A x| <= tolerance |b| or max_iterations. The preconditioner is

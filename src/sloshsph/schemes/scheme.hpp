@@ -2,6 +2,7 @@
 // The scheme a case chose (scheme.type), behind one interface for the driver. A variant, not
 // a class hierarchy: the driver dispatches once per step, never per particle.
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 #include "sloshsph/schemes/isph.hpp"
@@ -9,21 +10,26 @@
 
 namespace sloshsph {
 
-class AnyScheme {
- public:
-  AnyScheme(const CaseSpec& spec, double h) : scheme_(make(spec, h)) {}
+// In 2D the ISPH or the WCSPH scheme; in 3D the ISPH scheme only, so far (issue 31).
+template <int D>
+using SchemeVariant = std::conditional_t<D == 2, std::variant<IsphScheme, WcsphScheme>, std::variant<IsphScheme3>>;
 
-  void initialise(Particles& p, const FrameForce& f) {
+template <int D>
+class BasicAnyScheme {
+ public:
+  BasicAnyScheme(const CaseSpec& spec, double h) : scheme_(make(spec, h)) {}
+
+  void initialise(BasicParticles<D>& p, const BasicFrameForce<D>& f) {
     std::visit([&](auto& s) { s.initialise(p, f); }, scheme_);
   }
-  void step(Particles& p, const StepInput& in) {
+  void step(BasicParticles<D>& p, const BasicStepInput<D>& in) {
     std::visit([&](auto& s) { s.step(p, in); }, scheme_);
   }
-  const StepDiagnostics& diagnostics() const {
-    return std::visit([](const auto& s) -> const StepDiagnostics& { return s.diagnostics(); }, scheme_);
+  const BasicStepDiagnostics<D>& diagnostics() const {
+    return std::visit([](const auto& s) -> const BasicStepDiagnostics<D>& { return s.diagnostics(); }, scheme_);
   }
-  const NeighbourList& neighbours() const {
-    return std::visit([](const auto& s) -> const NeighbourList& { return s.neighbours(); }, scheme_);
+  const BasicNeighbourList<D>& neighbours() const {
+    return std::visit([](const auto& s) -> const BasicNeighbourList<D>& { return s.neighbours(); }, scheme_);
   }
   double reference_density() const {
     return std::visit([](const auto& s) { return s.reference_density(); }, scheme_);
@@ -32,8 +38,9 @@ class AnyScheme {
     return std::visit([](const auto& s) { return s.memory_parts(); }, scheme_);
   }
   // The largest stable step of an explicit scheme (WCSPH: the CFL condition), none for ISPH.
-  std::optional<double> stable_dt(const Particles& p, const FrameForce& f) const {
-    if (const auto* w = std::get_if<WcsphScheme>(&scheme_)) return w->stable_dt(p, f);
+  std::optional<double> stable_dt(const BasicParticles<D>& p, const BasicFrameForce<D>& f) const {
+    if constexpr (D == 2)
+      if (const auto* w = std::get_if<WcsphScheme>(&scheme_)) return w->stable_dt(p, f);
     return std::nullopt;
   }
   // Checkpoints (run/simulation): the scheme's state between steps.
@@ -43,14 +50,19 @@ class AnyScheme {
   void load_state(StateReader& r) {
     std::visit([&](auto& s) { s.load_state(r); }, scheme_);
   }
-  const WcsphScheme* wcsph() const { return std::get_if<WcsphScheme>(&scheme_); }
+  const WcsphScheme* wcsph() const {
+    if constexpr (D == 2) return std::get_if<WcsphScheme>(&scheme_);
+    else return nullptr;
+  }
 
  private:
-  static std::variant<IsphScheme, WcsphScheme> make(const CaseSpec& spec, double h) {
-    if (spec.scheme.type == "wcsph") return std::variant<IsphScheme, WcsphScheme>(std::in_place_type<WcsphScheme>, spec, h);
-    return std::variant<IsphScheme, WcsphScheme>(std::in_place_type<IsphScheme>, spec, h);
+  static SchemeVariant<D> make(const CaseSpec& spec, double h) {
+    if constexpr (D == 2)
+      if (spec.scheme.type == "wcsph") return SchemeVariant<D>(std::in_place_type<WcsphScheme>, spec, h);
+    return SchemeVariant<D>(std::in_place_type<BasicIsphScheme<D>>, spec, h);
   }
-  std::variant<IsphScheme, WcsphScheme> scheme_;
+  SchemeVariant<D> scheme_;
 };
+using AnyScheme = BasicAnyScheme<2>;
 
 }  // namespace sloshsph

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
+
+#include "sloshsph/core/errors.hpp"
 
 namespace sloshsph {
 
@@ -13,11 +16,22 @@ void BasicCellGrid<D>::build(const std::vector<Vec<D>>& position, std::size_t be
   Vec<D> lowest = componentwise(Vec<D>{}, [](double) { return std::numeric_limits<double>::max(); });
   Vec<D> highest = -lowest;
   for (std::size_t i = begin; i < end; ++i) {
+    // std::min and std::max pass a NaN by, and its cell index would be undefined: refused here
+    // (found: the sample of a failed step's state built a grid over it, 2026-12-07).
+    if (!is_finite(position[i])) throw RunFailure("cell grid: point " + std::to_string(i) + " is not finite");
     lowest = componentwise(lowest, position[i], [](double a, double b) { return std::min(a, b); });
     highest = componentwise(highest, position[i], [](double a, double b) { return std::max(a, b); });
   }
   if (begin == end) lowest = highest = Vec<D>{};
   origin_ = componentwise(lowest, [cell_size](double a) { return a - cell_size; });
+  double cells = 1.0;
+  for (int k = 0; k < D; ++k) cells *= (component(highest, k) - component(origin_, k)) / cell_size + 2.0;
+  // The points are inside the tank but for a step's flight of the leaked ones: a grid of more
+  // cells than this means points flung far away, which a run reports rather than allocates.
+  constexpr double kMaxCells = 2.0e8;
+  if (!(cells <= kMaxCells))
+    throw RunFailure("cell grid: the points spread over " + std::to_string(cells) + " cells of " +
+                     std::to_string(cell_size) + " m (points flung far out of the tank)");
   std::size_t ncell = 1;
   for (int k = 0; k < D; ++k) {
     n_[k] = static_cast<int>((component(highest, k) - component(origin_, k)) / cell_size) + 2;
