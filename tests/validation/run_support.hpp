@@ -32,12 +32,13 @@ struct RunResult {
 };
 
 // Reads the case file at `path` (run_case_in_memory: cases/<name>) with the overrides, runs it to time.end sampling every
-// output.sample_interval, and returns the columns. `inspect` sees the final simulation.
-template <class Inspect>
+// output.sample_interval, and returns the columns. `inspect` sees the final simulation. D = 3 for
+// a case with tank.dimensions = 3.
+template <int D = 2, class Inspect>
 RunResult run_file_in_memory(const std::string& path, const std::vector<std::string>& overrides, Inspect&& inspect) {
   const CaseSpec spec = resolve_case(read_case_file(path, overrides));
   const auto start = std::chrono::steady_clock::now();
-  Simulation sim(spec);
+  BasicSimulation<D> sim(spec);
   RunResult r;
   auto record = [&](const std::vector<double>& row) {
     for (std::size_t k = 0; k < row.size(); ++k) r.series[sim.columns()[k].name].push_back(row[k]);

@@ -633,19 +633,23 @@ void BasicIsphScheme<D>::solve_pressure_implicit(ParticleSet& p, const Input& in
     report = solve_assembled_ppe(multigrid, false);
     iterations += report.iterations;
   }
-  // A solve whose pressures would move a particle by more than 100 dp in one step (the pressure
-  // acceleration is about p / (rho0 dp), so dt^2 p / (rho0 dp) > 100 dp) has found no flow's
-  // pressure but that of a nearly singular block (rows_without_anchor): 40 MPa for the building
-  // tanks (dp = 0.1 m, dt = 5 ms), where the largest pressures of the runs are 40-60 kPa.
+  // Pressures that would move a particle by more than 100 dp in one step if they fell to 0 over dp
+  // (dt^2 p / (rho0 dp) > 100 dp) may be those of a nearly singular block (rows_without_anchor),
+  // so the blocks are looked for then too: 40 MPa for the building tanks (dp = 0.1 m, dt = 5 ms),
+  // where the largest pressures of the runs are 40-60 kPa. A level that high is not always a
+  // fault (the SF tank at 44 milli-g, t = 137.18 s: 7.1e7 Pa with no weakly held block, and the
+  // run went on at rest there): if no block is found, the solution stands.
   const double bound = 100.0 * rho0_ * dp_ * dp_ / (in.dt * in.dt);
   if (!report.converged || largest_magnitude(d.ppe_solution) > bound) {
     // A cluster of fluid that no p = 0 condition reaches (a thin jet pressed into the top of a
     // wall, its particles closer than dp, so that walls and each other fill their kernels and the
     // spray fraction misses it) makes a singular block with no solution, on which BiCGSTAB
     // diverges (measured: SF tank at 44 milli-g, t = 1633 s, 3 particles; relative residual 6.2
-    // after 1001 iterations). Its fluid is set to p = 0 as spray for this step and the system is
-    // assembled and solved again. Looked for only when a solve fails (one pass over the matrix,
-    // 0.4 ms at 6,219 rows, would be 2-3% of every step): a step that converges is unchanged.
+    // after 1001 iterations); one held to the rest only by links at the edge of the support solves
+    // to absurd pressures instead (the bound above). Its fluid is set to p = 0 as spray for this
+    // step and the system is assembled and solved again. Looked for only when a solve fails or
+    // breaks the bound (one pass over the matrix, 0.4 ms at 6,219 rows, would be 2-3% of every
+    // step): a step that keeps it is unchanged.
     diagnostics_.pinned_particles = pin_unanchored_blocks(p);
     if (diagnostics_.pinned_particles > 0) {
       assemble_ppe(p, in);
@@ -666,11 +670,6 @@ void BasicIsphScheme<D>::solve_pressure_implicit(ParticleSet& p, const Input& in
                        std::to_string(report.relative_residual) +
                        "); try a smaller time.dt or scheme.solver_max_iterations");
   }
-  if (const double largest = largest_magnitude(d.ppe_solution); largest > bound)
-    throw RunFailure("the implicit pressure solve gave pressures up to " + std::to_string(largest) +
-                     " Pa, beyond 100 rho0 dp^2 / dt^2 = " + std::to_string(bound) +
-                     " Pa (a nearly singular block of the pressure equations that no p = 0 condition holds); try a "
-                     "smaller time.dt");
   diagnostics_.solver_iterations = iterations;
   diagnostics_.solver_residual = report.relative_residual;
   for (std::size_t i = 0; i < p.n_fluid; ++i)

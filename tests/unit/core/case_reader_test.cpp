@@ -293,3 +293,94 @@ TEST(CaseReader, FrontProbeKeys) {
 
 }  // namespace
 }  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+const char* kBox3d = R"(
+[tank]
+dimensions = 3
+shape = "rectangle"
+length = 0.4
+breadth = 0.2
+height = 0.3
+
+[fill]
+depth = 0.14
+
+[particles]
+dp = 0.02
+
+[time]
+end = 1.0
+
+[excitation]
+type = "harmonic"
+amplitude = 0.002
+frequency = 1.0
+direction = [0.0, 2.0]
+
+[[probes.gauge]]
+name = "g"
+x = 0.1
+y = 0.05
+
+[[probes.pressure]]
+name = "p"
+x = 0.2
+y = 0.1
+z = 0.01
+)";
+
+// Issue 31, section 2: the fixed 3D keys. y of a gauge and of a probe is the breadth coordinate,
+// z of a probe its height; the direction is normalised. (Exact values: no arithmetic but the
+// normalisation of (0, 2).)
+TEST(CaseReader, ThreeDimensionalKeys) {
+  const CaseSpec s = read_case_text(kBox3d, "case.toml", {});
+  EXPECT_EQ(s.tank.dimensions, 3);
+  EXPECT_EQ(s.tank.breadth, 0.2);
+  EXPECT_EQ(s.excitation.direction.x, 0.0);
+  EXPECT_EQ(s.excitation.direction.y, 1.0);
+  EXPECT_EQ(s.gauges.at(0).x, 0.1);
+  EXPECT_EQ(s.gauges.at(0).across, 0.05);
+  EXPECT_EQ(s.pressure_probes.at(0).position.x, 0.2);
+  EXPECT_EQ(s.pressure_probes.at(0).across, 0.1);
+  EXPECT_EQ(s.pressure_probes.at(0).position.y, 0.01);
+  // The 2D default is unchanged, and a 2D case.toml has no 3D key.
+  const CaseSpec flat = read_case_text(kMinimal, "case.toml", {});
+  EXPECT_EQ(flat.tank.dimensions, 2);
+  EXPECT_EQ(resolved_case_toml(flat).find("dimensions"), std::string::npos);
+  // The resolved 3D case reads back to the same keys.
+  const CaseSpec again = read_case_text(resolved_case_toml(s), "resolved.toml", {});
+  EXPECT_EQ(again.tank.dimensions, 3);
+  EXPECT_EQ(again.tank.breadth, s.tank.breadth);
+  EXPECT_EQ(again.excitation.direction.y, 1.0);
+  EXPECT_EQ(again.gauges.at(0).across, 0.05);
+  EXPECT_EQ(again.pressure_probes.at(0).across, 0.1);
+  EXPECT_EQ(again.pressure_probes.at(0).position.y, 0.01);
+}
+
+// 3D keys in a 2D case, and what 3D cannot do yet, are refused by name.
+TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
+  expect_error(kMinimal, {"tank.breadth=0.2"}, "tank.breadth", "dimensions = 3");
+  expect_error(kMinimal, {"excitation={type=\"harmonic\", amplitude=0.001, frequency=1.0, direction=[0.0, 1.0]}"},
+               "excitation.direction", "3D tanks");
+  expect_error(kBox3d, {"tank.breadth=0.05"}, "particles.dp", "breadth");
+  expect_error(kBox3d, {"excitation.direction=[0.0, 0.0]"}, "excitation.direction", "not zero");
+  expect_error(kBox3d, {"tank.shape=\"cylinder\""}, "tank.shape", "not available yet");
+  expect_error(kBox3d, {"scheme.type=\"wcsph\""}, "scheme.type", "not available in 3D");
+  expect_error(kBox3d, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.type",
+               "not available in 3D");
+  std::string with_face = kBox3d;
+  with_face.replace(with_face.find("z = 0.01\n"), 9, "z = 0.01\nto = [0.2, 0.05]\n");
+  expect_error(with_face, {}, "probes.pressure.0.to", "not available in 3D");
+  expect_error(std::string(kBox3d) + "\n[[screens]]\nname = \"s\"\nx = 0.2\nsolidity = 0.4\n", {}, "screens",
+               "not available in 3D");
+  // In 3D a gauge needs its y, and a probe its z.
+  expect_error(std::string(kBox3d) + "\n[[probes.gauge]]\nname = \"h\"\nx = 0.1\n", {}, "probes.gauge.1.y", "");
+  expect_error(std::string(kBox3d) + "\n[[probes.pressure]]\nname = \"q\"\nx = 0.1\ny = 0.1\n", {}, "probes.pressure.1.z",
+               "");
+}
+
+}  // namespace
+}  // namespace sloshsph

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 
+#include "sloshsph/core/errors.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 #include "neighbour_checks.hpp"
 
@@ -19,6 +21,19 @@ TEST(Neighbours, EqualsBruteForceOnRandomPoints) {
   // Reference: all pairs closer than the search radius, by brute force (neighbour_checks.hpp).
   const std::size_t total = testing::expect_list_equals_brute_force(random_points(1500, 7, 1.0), 1000, 0.04, 0.01);
   EXPECT_GT(total, 1000u);  // 1500 points in 1 m^2: about 11 neighbours each within 0.05 m
+}
+
+// A point that is not finite, or points flung so far apart that the grid would need more than 2e8
+// cells, are a RunFailure that says so, not an out-of-bounds cell or a std::length_error (found:
+// the sample of a failed step's state, 2026-12-07).
+TEST(Neighbours, CellGridRefusesNonFiniteAndFarFlungPoints) {
+  CellGrid grid;
+  std::vector<Vec2> points = {{0.0, 0.0}, {0.1, 0.0}, {std::nan(""), 0.0}};
+  EXPECT_THROW(grid.build(points, 0, points.size(), 0.1), RunFailure);
+  points[2] = {2.0e11, -6.6e11};
+  EXPECT_THROW(grid.build(points, 0, points.size(), 0.1), RunFailure);
+  points[2] = {100.0, 50.0};  // 1e6 cells: built
+  EXPECT_NO_THROW(grid.build(points, 0, points.size(), 0.1));
 }
 
 TEST(Neighbours, StaleAfterHalfTheSkin) {

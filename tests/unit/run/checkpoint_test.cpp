@@ -25,14 +25,15 @@ using test::same_bits;
 // Reference: the uninterrupted run. Tolerance: none (bitwise), for the same thread count: the
 // checkpoint holds every evolving quantity, the neighbour list included, so the restored run
 // sums in the same order.
+template <int D = 2>
 void expect_bitwise_resume(const CaseSpec& spec) {
-  Simulation original(spec);
+  BasicSimulation<D> original(spec);
   for (int n = 0; n < 150; ++n) original.step();  // past several neighbour rebuilds
   StateWriter w;
   original.save_state(w);
   for (int n = 0; n < 150; ++n) original.step();
 
-  Simulation resumed(spec, SimulationStart::for_checkpoint);
+  BasicSimulation<D> resumed(spec, SimulationStart::for_checkpoint);
   StateReader r(w.bytes(), "memory");
   resumed.load_state(r);
   EXPECT_TRUE(r.at_end());
@@ -50,6 +51,15 @@ TEST(Checkpoint, IsphResumesBitwise) { expect_bitwise_resume(small_case({})); }
 
 TEST(Checkpoint, WcsphResumesBitwise) {
   expect_bitwise_resume(small_case({"scheme={type=\"wcsph\", turbulence=\"sps\", xsph=0.05, shepard_interval=20}"}));
+}
+
+// A 3D case (issue 31) resumes bitwise too: the box of cases/box3d_diagonal.toml, coarser.
+TEST(Checkpoint, ThreeDimensionalCaseResumesBitwise) {
+  const CaseSpec spec = resolve_case(read_case_file(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/box3d_diagonal.toml",
+                                                    {"particles.dp=0.02", "time.settle=0.05", "time.dt=0.002",
+                                                     "output.snapshot_interval=0"}));
+  ASSERT_EQ(spec.tank.dimensions, 3);
+  expect_bitwise_resume<3>(spec);
 }
 
 // Particle shifting (issue 30) keeps nothing between steps but the count of cut shifts, which the

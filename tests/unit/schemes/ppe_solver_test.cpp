@@ -172,5 +172,35 @@ TEST(PpeSolver, FindsTheBlockThatNoAnchorReaches) {
   EXPECT_FALSE(solve_bicgstab(A, b, x, 1e-8, 500, work).converged);
 }
 
+// A block held to the anchored grid by one weak link (1e-7 of the diagonal; the cluster row's sum
+// stays zero): anchored at the default tolerance (1e-8), left unanchored at the scheme's 1e-6
+// (kWeakPpeLink), so that the scheme pins it rather than solving it to absurd pressures.
+TEST(PpeSolver, AWeakLinkDoesNotAnchorABlock) {
+  SparseRows A = grid_and_cluster(2.0);
+  const std::size_t c = 16;  // the cluster's first row
+  ASSERT_EQ(A.slot_end[c] - A.slot_begin[c], 3u);
+  // Reuse the row's diagonal slot for the new diagonal and its first off-diagonal for the link.
+  A.value[A.slot_begin[c]] = 2.0 + 1e-7;
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(A.rows());
+  for (std::size_t r = 0; r < A.rows(); ++r)
+    for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) rows[r].push_back({A.column[k], A.value[k]});
+  rows[c].push_back({0, -1e-7});
+  SparseRows B;
+  std::vector<std::size_t> capacity;
+  for (const auto& row : rows) capacity.push_back(row.size());
+  B.reserve_rows(capacity);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::size_t slot = B.slot_begin[r];
+    for (const auto& [column, value] : rows[r]) {
+      B.column[slot] = column;
+      B.value[slot++] = value;
+    }
+    B.slot_end[r] = slot;
+  }
+  EXPECT_TRUE(rows_without_anchor(B).empty());
+  const std::vector<std::uint32_t> expected = {16, 17, 18, 19};
+  EXPECT_EQ(rows_without_anchor(B, 1e-6), expected);
+}
+
 }  // namespace
 }  // namespace sloshsph
