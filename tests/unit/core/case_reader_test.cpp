@@ -297,55 +297,26 @@ TEST(CaseReader, FrontProbeKeys) {
 namespace sloshsph {
 namespace {
 
-const char* kBox3d = R"(
-[tank]
-dimensions = 3
-shape = "rectangle"
-length = 0.4
-breadth = 0.2
-height = 0.3
-
-[fill]
-depth = 0.14
-
-[particles]
-dp = 0.02
-
-[time]
-end = 1.0
-
-[excitation]
-type = "harmonic"
-amplitude = 0.002
-frequency = 1.0
-direction = [0.0, 2.0]
-
-[[probes.gauge]]
-name = "g"
-x = 0.1
-y = 0.05
-
-[[probes.pressure]]
-name = "p"
-x = 0.2
-y = 0.1
-z = 0.01
-)";
+// cases/box3d_diagonal.toml, moved along y ([0, 2], normalised to [0, 1]).
+std::string box3d_text() {
+  return read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/box3d_diagonal.toml");
+}
+const std::vector<std::string> kAlongY = {"excitation.direction=[0.0, 2.0]"};
 
 // Issue 31, section 2: the fixed 3D keys. y of a gauge and of a probe is the breadth coordinate,
 // z of a probe its height; the direction is normalised. (Exact values: no arithmetic but the
 // normalisation of (0, 2).)
 TEST(CaseReader, ThreeDimensionalKeys) {
-  const CaseSpec s = read_case_text(kBox3d, "case.toml", {});
+  const CaseSpec s = read_case_text(box3d_text(), "case.toml", kAlongY);
   EXPECT_EQ(s.tank.dimensions, 3);
   EXPECT_EQ(s.tank.breadth, 0.2);
   EXPECT_EQ(s.excitation.direction.x, 0.0);
   EXPECT_EQ(s.excitation.direction.y, 1.0);
-  EXPECT_EQ(s.gauges.at(0).x, 0.1);
-  EXPECT_EQ(s.gauges.at(0).across, 0.05);
-  EXPECT_EQ(s.pressure_probes.at(0).position.x, 0.2);
-  EXPECT_EQ(s.pressure_probes.at(0).across, 0.1);
-  EXPECT_EQ(s.pressure_probes.at(0).position.y, 0.01);
+  EXPECT_EQ(s.gauges.at(2).x, 0.2);
+  EXPECT_EQ(s.gauges.at(2).across, 0.17);
+  EXPECT_EQ(s.pressure_probes.at(1).position.x, 0.395);
+  EXPECT_EQ(s.pressure_probes.at(1).across, 0.1);
+  EXPECT_EQ(s.pressure_probes.at(1).position.y, 0.1);
   // The 2D default is unchanged, and a 2D case.toml has no 3D key.
   const CaseSpec flat = read_case_text(kMinimal, "case.toml", {});
   EXPECT_EQ(flat.tank.dimensions, 2);
@@ -355,9 +326,9 @@ TEST(CaseReader, ThreeDimensionalKeys) {
   EXPECT_EQ(again.tank.dimensions, 3);
   EXPECT_EQ(again.tank.breadth, s.tank.breadth);
   EXPECT_EQ(again.excitation.direction.y, 1.0);
-  EXPECT_EQ(again.gauges.at(0).across, 0.05);
-  EXPECT_EQ(again.pressure_probes.at(0).across, 0.1);
-  EXPECT_EQ(again.pressure_probes.at(0).position.y, 0.01);
+  EXPECT_EQ(again.gauges.at(2).across, 0.17);
+  EXPECT_EQ(again.pressure_probes.at(1).across, 0.1);
+  EXPECT_EQ(again.pressure_probes.at(1).position.y, 0.1);
 }
 
 // 3D keys in a 2D case, and what 3D cannot do yet, are refused by name.
@@ -365,21 +336,20 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(kMinimal, {"tank.breadth=0.2"}, "tank.breadth", "dimensions = 3");
   expect_error(kMinimal, {"excitation={type=\"harmonic\", amplitude=0.001, frequency=1.0, direction=[0.0, 1.0]}"},
                "excitation.direction", "3D tanks");
-  expect_error(kBox3d, {"tank.breadth=0.05"}, "particles.dp", "breadth");
-  expect_error(kBox3d, {"excitation.direction=[0.0, 0.0]"}, "excitation.direction", "not zero");
-  expect_error(kBox3d, {"tank.shape=\"cylinder\""}, "tank.shape", "not available yet");
-  expect_error(kBox3d, {"scheme.type=\"wcsph\""}, "scheme.type", "not available in 3D");
-  expect_error(kBox3d, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.type",
+  const std::string box = box3d_text();
+  expect_error(box, {"tank.breadth=0.03"}, "particles.dp", "breadth");
+  expect_error(box, {"excitation.direction=[0.0, 0.0]"}, "excitation.direction", "not zero");
+  expect_error(box, {"tank.shape=\"cylinder\""}, "tank.shape", "not available yet");
+  expect_error(box, {"scheme.type=\"wcsph\""}, "scheme.type", "not available in 3D");
+  expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.type",
                "not available in 3D");
-  std::string with_face = kBox3d;
-  with_face.replace(with_face.find("z = 0.01\n"), 9, "z = 0.01\nto = [0.2, 0.05]\n");
+  std::string with_face = box;
+  with_face.replace(with_face.find("z = 0.005\n"), 10, "z = 0.005\nto = [0.2, 0.05]\n");
   expect_error(with_face, {}, "probes.pressure.0.to", "not available in 3D");
-  expect_error(std::string(kBox3d) + "\n[[screens]]\nname = \"s\"\nx = 0.2\nsolidity = 0.4\n", {}, "screens",
-               "not available in 3D");
+  expect_error(box + "\n[[screens]]\nname = \"s\"\nx = 0.2\nsolidity = 0.4\n", {}, "screens", "not available in 3D");
   // In 3D a gauge needs its y, and a probe its z.
-  expect_error(std::string(kBox3d) + "\n[[probes.gauge]]\nname = \"h\"\nx = 0.1\n", {}, "probes.gauge.1.y", "");
-  expect_error(std::string(kBox3d) + "\n[[probes.pressure]]\nname = \"q\"\nx = 0.1\ny = 0.1\n", {}, "probes.pressure.1.z",
-               "");
+  expect_error(box + "\n[[probes.gauge]]\nname = \"h\"\nx = 0.1\n", {}, "probes.gauge.3.y", "");
+  expect_error(box + "\n[[probes.pressure]]\nname = \"q\"\nx = 0.1\ny = 0.1\n", {}, "probes.pressure.2.z", "");
 }
 
 }  // namespace

@@ -132,18 +132,9 @@ TEST(PpeSolver, SameBitsOnOneAndTwoThreads) {
 // The second block is the pure-Neumann Laplacian of three fluid rows (a triangle: diagonal 2, -1
 // to each other; every row sums to 0) and a wall-like row that refers to one of them while no
 // fluid row refers to it (connected in one direction only). Reference: that block's four rows.
-SparseRows grid_and_cluster(double cluster_diagonal) {
-  const int n = 4;
-  const SparseRows grid = convection_diffusion(n, 0.0);
-  const std::size_t m = grid.rows();
-  std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(m + 4);
-  for (std::size_t r = 0; r < m; ++r)
-    for (std::size_t k = grid.slot_begin[r]; k < grid.slot_end[r]; ++k) rows[r].push_back({grid.column[k], grid.value[k]});
-  const auto c = static_cast<std::uint32_t>(m);
-  rows[m] = {{c, cluster_diagonal}, {c + 1, -1.0}, {c + 2, -1.0}};
-  rows[m + 1] = {{c + 1, 2.0}, {c, -1.0}, {c + 2, -1.0}};
-  rows[m + 2] = {{c + 2, 2.0}, {c, -1.0}, {c + 1, -1.0}};
-  rows[m + 3] = {{c + 3, 0.5}, {c, -0.5}};  // the wall row: a weighted average of one fluid row
+// The sparse matrix of rows given as (column, value) lists.
+using RowLists = std::vector<std::vector<std::pair<std::uint32_t, double>>>;
+SparseRows sparse_rows(const RowLists& rows) {
   SparseRows A;
   std::vector<std::size_t> capacity;
   for (const auto& row : rows) capacity.push_back(row.size());
@@ -157,6 +148,27 @@ SparseRows grid_and_cluster(double cluster_diagonal) {
     A.slot_end[r] = slot;
   }
   return A;
+}
+
+// The (column, value) lists of A's rows.
+RowLists row_lists(const SparseRows& A) {
+  RowLists rows(A.rows());
+  for (std::size_t r = 0; r < A.rows(); ++r)
+    for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) rows[r].push_back({A.column[k], A.value[k]});
+  return rows;
+}
+
+SparseRows grid_and_cluster(double cluster_diagonal) {
+  const int n = 4;
+  RowLists rows = row_lists(convection_diffusion(n, 0.0));
+  const std::size_t m = rows.size();
+  rows.resize(m + 4);
+  const auto c = static_cast<std::uint32_t>(m);
+  rows[m] = {{c, cluster_diagonal}, {c + 1, -1.0}, {c + 2, -1.0}};
+  rows[m + 1] = {{c + 1, 2.0}, {c, -1.0}, {c + 2, -1.0}};
+  rows[m + 2] = {{c + 2, 2.0}, {c, -1.0}, {c + 1, -1.0}};
+  rows[m + 3] = {{c + 3, 0.5}, {c, -0.5}};  // the wall row: a weighted average of one fluid row
+  return sparse_rows(rows);
 }
 
 TEST(PpeSolver, FindsTheBlockThatNoAnchorReaches) {
@@ -176,27 +188,12 @@ TEST(PpeSolver, FindsTheBlockThatNoAnchorReaches) {
 // stays zero): anchored at the default tolerance (1e-8), left unanchored at the scheme's 1e-6
 // (kWeakPpeLink), so that the scheme pins it rather than solving it to absurd pressures.
 TEST(PpeSolver, AWeakLinkDoesNotAnchorABlock) {
-  SparseRows A = grid_and_cluster(2.0);
-  const std::size_t c = 16;  // the cluster's first row
-  ASSERT_EQ(A.slot_end[c] - A.slot_begin[c], 3u);
-  // Reuse the row's diagonal slot for the new diagonal and its first off-diagonal for the link.
-  A.value[A.slot_begin[c]] = 2.0 + 1e-7;
-  std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(A.rows());
-  for (std::size_t r = 0; r < A.rows(); ++r)
-    for (std::size_t k = A.slot_begin[r]; k < A.slot_end[r]; ++k) rows[r].push_back({A.column[k], A.value[k]});
+  RowLists rows = row_lists(grid_and_cluster(2.0));
+  const std::size_t c = 16;  // the cluster's first row: its diagonal first
+  ASSERT_EQ(rows[c].front().first, c);
+  rows[c].front().second = 2.0 + 1e-7;
   rows[c].push_back({0, -1e-7});
-  SparseRows B;
-  std::vector<std::size_t> capacity;
-  for (const auto& row : rows) capacity.push_back(row.size());
-  B.reserve_rows(capacity);
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::size_t slot = B.slot_begin[r];
-    for (const auto& [column, value] : rows[r]) {
-      B.column[slot] = column;
-      B.value[slot++] = value;
-    }
-    B.slot_end[r] = slot;
-  }
+  const SparseRows B = sparse_rows(rows);
   EXPECT_TRUE(rows_without_anchor(B).empty());
   const std::vector<std::uint32_t> expected = {16, 17, 18, 19};
   EXPECT_EQ(rows_without_anchor(B, 1e-6), expected);
