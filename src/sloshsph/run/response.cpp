@@ -14,7 +14,7 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 
 bool analysed_column(const std::string& name) {
   return starts_with(name, "eta:") || starts_with(name, "p:") || starts_with(name, "F_screen:") || name == "F_w" ||
-         name == "F_sw";
+         name == "F_sw" || name == "F_sw_y";
 }
 
 int column_index(const std::vector<std::string>& names, const std::string& name) {
@@ -34,6 +34,7 @@ const ResponseValue* Response::find(const std::string& name) const {
 Response steady_state_response(const std::vector<std::string>& names, const std::vector<std::string>& units,
                                const std::vector<std::vector<double>>& columns, const ResponseOptions& options) {
   Response r;
+  r.whole_tank = options.whole_tank;
   const std::vector<double>& t = columns.front();
   if (!(options.period > 0.0) || t.size() < 3 || t.back() - t.front() < options.period) {
     r.note = "the record is shorter than one excitation period";
@@ -76,7 +77,7 @@ nlohmann::json response_json(const Response& r) {
   nlohmann::json values = nlohmann::json::object();
   for (const ResponseValue& v : r.values) values[v.name] = {{"avg_max", v.avg_max}, {"avg_min", v.avg_min}, {"unit", v.unit}};
   j["steady_state"] = values;
-  if (r.energy_per_cycle) j["energy_per_cycle_J_per_m"] = *r.energy_per_cycle;
+  if (r.energy_per_cycle) j[r.whole_tank ? "energy_per_cycle_J" : "energy_per_cycle_J_per_m"] = *r.energy_per_cycle;
   if (r.normalised_energy) j["normalised_energy"] = *r.normalised_energy;
   return j;
 }
@@ -89,7 +90,7 @@ std::string response_csv(const Response& r) {
     out += line;
   }
   if (r.energy_per_cycle) {
-    std::snprintf(line, sizeof line, "energy_per_cycle,J/m,,,%.9g\n", *r.energy_per_cycle);
+    std::snprintf(line, sizeof line, "energy_per_cycle,%s,,,%.9g\n", r.whole_tank ? "J" : "J/m", *r.energy_per_cycle);
     out += line;
   }
   if (r.normalised_energy) {

@@ -18,6 +18,7 @@ struct ResponseOptions {
   double water_mass = 0.0;     // kg/m, for the normalised energy of eq. 4.27
   double amplitude = 0.0;      // m, base amplitude X0, for eq. 4.27
   bool energy = true;          // eq. 4.28 (horizontal base motion only: F_w dX)
+  bool whole_tank = false;     // 3D: forces in N and energies in J (2D: per metre, N/m and J/m)
 };
 
 struct ResponseValue {
@@ -29,17 +30,19 @@ struct ResponseValue {
 
 struct Response {
   std::vector<ResponseValue> values;        // every gauge, pressure probe and force column
-  std::optional<double> energy_per_cycle;   // J/m per cycle, eq. 4.28 (needs F_w and x_base)
+  std::optional<double> energy_per_cycle;   // J/m (3D: J) per cycle, eq. 4.28 (needs F_w and x_base)
   std::optional<double> normalised_energy;  // eq. 4.27
   int cycles = 0;                           // cycles actually averaged
   double cutoff_hz = 0.0;
   std::string note;  // why nothing could be computed (run shorter than one cycle, ...)
+  bool whole_tank = false;  // ResponseOptions::whole_tank: the energy in J, not J/m
 
   const ResponseValue* find(const std::string& name) const;
 };
 
 // `names`/`units` are the time-series columns, `columns[k]` the samples of column k (the
-// first is time). Columns analysed: every "eta:", "p:" and "F_screen:" column, F_w, F_sw.
+// first is time). Columns analysed: every "eta:", "p:" and "F_screen:" column, F_w, F_sw (and the
+// 3D F_sw_y).
 // A record shorter than one period gives a Response with only `note` set.
 Response steady_state_response(const std::vector<std::string>& names, const std::vector<std::string>& units,
                                const std::vector<std::vector<double>>& columns, const ResponseOptions& options);

@@ -143,6 +143,7 @@ nlohmann::json analyse_response(const CaseSpec& spec, const BasicSimulation<D>& 
   o.water_mass = sim.scene().initial_fluid_mass;
   o.amplitude = e.amplitude;
   o.energy = e.type == ExcitationType::harmonic;  // pitch does its work through a moment, not F_w dX
+  o.whole_tank = D == 3;
   const Response r = steady_state_response(names, units, series.columns, o);
   if (r.note.empty()) write_file_atomic((fs::path(dir) / "response.csv").string(), response_csv(r));
   return response_json(r);

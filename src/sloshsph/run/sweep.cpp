@@ -314,7 +314,7 @@ std::string frequency_response_csv(const CaseSpec& spec, const std::vector<Sweep
     out += cell(number(s, "excitation_omega_rad_s"));
     out += cell(steady(s, first_gauge, "avg_max")) + cell(steady(s, first_gauge, "avg_min"));
     out += cell(steady(s, "F_sw", "avg_max")) + cell(steady(s, "F_sw", "avg_min"));
-    out += cell(number(response, "energy_per_cycle_J_per_m"));
+    out += cell(number(response, spec.tank.dimensions == 3 ? "energy_per_cycle_J" : "energy_per_cycle_J_per_m"));
     out += "," + status;
     out += cell(number(response, "normalised_energy"));
     out += cell(steady(s, "F_w", "avg_max")) + cell(steady(s, "F_w", "avg_min"));
