@@ -24,7 +24,9 @@ struct TankSpec {
   // the length, y across the breadth, z up; geometry/prism_tank.hpp). Issue 31.
   int dimensions = 2;
   double breadth = 0.0;       // m, 3D: the inner breadth, between the end walls y = 0 and y = breadth
-  // "rectangle", "sloped" (alias "triangle", "trapezoid"), "parabolic", "circular", "polyline".
+  double radius = 0.0;        // m, 3D "cylinder": inner radius (length and breadth are then 2 radius)
+  // "rectangle", "sloped" (alias "triangle", "trapezoid"), "parabolic", "circular", "polyline";
+  // 3D only: "cylinder" (upright, geometry/cylinder_tank.hpp).
   std::string shape = "rectangle";
   double length = 0.0;        // m, inner length (width of the section at the top of the walls)
   double height = 0.0;        // m, wall height above the lowest point of the bottom

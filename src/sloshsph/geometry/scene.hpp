@@ -6,6 +6,9 @@
 
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/core/particles.hpp"
+#include <optional>
+
+#include "sloshsph/geometry/cylinder_tank.hpp"
 #include "sloshsph/geometry/plates.hpp"
 #include "sloshsph/geometry/tank.hpp"
 
@@ -25,8 +28,11 @@ using PressureSensor = BasicPressureSensor<2>;
 // plates exist in 2D only (the case reader refuses them in 3D).
 template <int D>
 struct BasicScene {
-  std::shared_ptr<const TankGeometry> tank;  // the section; shared: ContainerDistance points into it
+  // The section; shared: ContainerDistance points into it. For a cylinder, the rectangle 2R x
+  // height that it stands in (its bounds and flat bottom).
+  std::shared_ptr<const TankGeometry> tank;
   double breadth = 0.0;        // m, 3D: the tank spans 0 <= y <= breadth
+  std::optional<CylinderTank> cylinder;  // 3D, shape "cylinder": the tank is this, not the extruded section
   BasicParticles<D> particles;
   double dp = 0.0;
   double h = 0.0;              // kernel smoothing length, kernel_ratio * dp

@@ -344,6 +344,10 @@ TankGeometry make_tank(const TankSpec& spec, const std::string& where) {
     t = sloped(spec, where);
   } else if (spec.shape == "polyline") {
     t = polyline(spec, where);
+  } else if (spec.shape == "cylinder") {
+    throw InputError(where, "tank.shape",
+                     "an upright cylinder (3D) has no tank section: the 2D tools (modes, tuning, the linear model) "
+                     "do not take it");
   } else {
     throw InputError(where, "tank.shape",
                      "unknown shape '" + spec.shape +

@@ -54,9 +54,17 @@ TankSpec read_tank(TableReader& r) {
   t.dimensions = static_cast<int>(r.integer("dimensions", t.dimensions, 2, 3));
   t.shape = r.choice("shape", t.shape,
                      {"rectangle", "sloped", "triangle", "trapezoid", "parabolic", "circular", "polyline", "cylinder"});
-  if (t.shape == "cylinder")
-    r.fail("shape", "\"cylinder\" (an upright circular tank, issue 31) is not available yet; in 3D every other shape "
-                    "is extruded over `breadth` (a box for \"rectangle\")");
+  if (t.shape == "cylinder") {
+    // An upright circular tank (3D): radius and wall height; it spans 2 radius in x and y.
+    if (t.dimensions != 3) r.fail("shape", "\"cylinder\" is an upright circular tank: set dimensions = 3");
+    for (const char* key : {"length", "breadth"})
+      if (r.has(key)) r.fail(key, "a cylinder is given by its radius and height");
+    t.radius = r.positive("radius");
+    t.height = r.positive("height");
+    t.length = t.breadth = 2.0 * t.radius;
+    r.finish();
+    return t;
+  }
   if (t.dimensions == 3) t.breadth = r.positive("breadth");
   else if (r.has("breadth"))
     r.fail("breadth", "is the breadth of a 3D tank: set dimensions = 3, or remove it (a 2D case is per metre of breadth)");
@@ -1017,11 +1025,12 @@ std::string resolved_case_toml(const CaseSpec& s) {
   root.insert("fluid", toml::table{{"density", s.fluid.density}, {"viscosity", s.fluid.viscosity}, {"gravity", s.fluid.gravity}});
   toml::table tank{{"shape", s.tank.shape}};
   const bool three_d = s.tank.dimensions == 3;  // 2D cases keep the case.toml they had before issue 31
-  if (three_d) {
-    tank.insert("dimensions", 3);
-    tank.insert("breadth", s.tank.breadth);
-  }
-  if (s.tank.shape == "polyline") {
+  if (three_d) tank.insert("dimensions", 3);
+  if (three_d && s.tank.shape != "cylinder") tank.insert("breadth", s.tank.breadth);
+  if (s.tank.shape == "cylinder") {
+    tank.insert("radius", s.tank.radius);
+    tank.insert("height", s.tank.height);
+  } else if (s.tank.shape == "polyline") {
     toml::array pts;
     for (const Vec2& q : s.tank.points) pts.push_back(toml::array{q.x, q.y});
     tank.insert("points", pts);

@@ -43,8 +43,11 @@ std::string format_point(Vec<D> p) {
 
 }  // namespace
 
-// In 3D, too, the first mode of the section (along x): the (1, 0) mode of a box.
+// In 3D, too, the first mode of the section (along x): the (1, 0) mode of a box; for an upright
+// cylinder its first mode (k = 1.8412 / R).
 double first_sloshing_omega(const CaseSpec& spec) {
+  if (spec.tank.shape == "cylinder")
+    return cylinder_first_sloshing_omega(spec.tank.radius, spec.fill.depth, spec.fluid.gravity);
   if (spec.tank.shape == "rectangle")
     return rectangular_sloshing_omega(spec.tank.length, spec.fill.depth, spec.fluid.gravity);  // exact
   const TankGeometry tank = make_tank(spec.tank, spec.where("tank.shape"));
@@ -640,6 +643,7 @@ void BasicSimulation<D>::load_state(StateReader& r) {
 template <int D>
 double BasicSimulation<D>::container_distance(Vec<D> p) const {
   if constexpr (D == 2) return container_(p);
+  else if (scene_.cylinder) return scene_.cylinder->signed_distance(p);  // exact, and as cheap
   else return std::min(container_(in_section(p)), std::min(p.y, scene_.breadth - p.y));
 }
 
@@ -653,10 +657,13 @@ BasicWallContact<D> BasicSimulation<D>::wall_contact(double dt) {
   } else {
     const TankGeometry& section = *scene_.tank;
     const double breadth = scene_.breadth;
+    const std::optional<CylinderTank>& cylinder = scene_.cylinder;
     return keep_fluid_in_container<3>(
         scene_.particles, [this](Vec3 q) { return container_distance(q); },
-        [&section, breadth](Vec3 q) { return container_signed_distance<3>(section, breadth, q); }, dp, container_grid(),
-        dt);
+        [&section, breadth, &cylinder](Vec3 q) {
+          return cylinder ? cylinder->signed_distance(q) : container_signed_distance<3>(section, breadth, q);
+        },
+        dp, container_grid(), dt);
   }
 }
 

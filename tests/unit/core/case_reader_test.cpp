@@ -331,6 +331,23 @@ TEST(CaseReader, ThreeDimensionalKeys) {
   EXPECT_EQ(again.pressure_probes.at(1).position.y, 0.1);
 }
 
+// An upright cylinder: radius and height; it spans 2R in x and y (exact: no arithmetic but 2R), and
+// its resolved case reads back.
+TEST(CaseReader, CylinderKeys) {
+  const CaseSpec s =
+      read_case_file(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml", {});
+  EXPECT_EQ(s.tank.dimensions, 3);
+  EXPECT_EQ(s.tank.shape, "cylinder");
+  EXPECT_EQ(s.tank.radius, 0.15);
+  EXPECT_EQ(s.tank.height, 0.3);
+  EXPECT_EQ(s.tank.length, 0.3);
+  EXPECT_EQ(s.tank.breadth, 0.3);
+  const CaseSpec again = read_case_text(resolved_case_toml(s), "resolved.toml", {});
+  EXPECT_EQ(again.tank.shape, "cylinder");
+  EXPECT_EQ(again.tank.radius, 0.15);
+  EXPECT_EQ(again.tank.height, 0.3);
+}
+
 // 3D keys in a 2D case, and what 3D cannot do yet, are refused by name.
 TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(kMinimal, {"tank.breadth=0.2"}, "tank.breadth", "dimensions = 3");
@@ -339,7 +356,9 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   const std::string box = box3d_text();
   expect_error(box, {"tank.breadth=0.03"}, "particles.dp", "breadth");
   expect_error(box, {"excitation.direction=[0.0, 0.0]"}, "excitation.direction", "not zero");
-  expect_error(box, {"tank.shape=\"cylinder\""}, "tank.shape", "not available yet");
+  expect_error(kMinimal, {"tank={shape=\"cylinder\", radius=0.2, height=0.4}"}, "tank.shape", "dimensions = 3");
+  expect_error(box, {"tank={dimensions=3, shape=\"cylinder\", radius=0.2, height=0.4, breadth=0.4}"}, "tank.breadth",
+               "radius and height");
   expect_error(box, {"scheme.type=\"wcsph\""}, "scheme.type", "not available in 3D");
   expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.type",
                "not available in 3D");

@@ -1,0 +1,56 @@
+#include "sloshsph/geometry/cylinder_tank.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+namespace sloshsph {
+namespace {
+
+// Lattice lines (i + 1/2) dp across the tank's plan, 0 to 2R.
+int lattice_lines(const CylinderTank& tank, double dp) { return static_cast<int>(std::ceil(2.0 * tank.radius / dp - 1e-9)); }
+
+}  // namespace
+
+std::vector<WallSample3> sample_walls(const CylinderTank& tank, double dp, int layers) {
+  std::vector<WallSample3> out;
+  const Vec2 c = tank.axis();
+  const int levels = static_cast<int>(std::ceil(tank.height / dp - 1e-9));
+  for (int k = 0; k < layers; ++k) {
+    const double rho = tank.radius + (k + 0.5) * dp;
+    const int around = std::max(3, static_cast<int>(std::lround(2.0 * std::numbers::pi * rho / dp)));
+    const double shift = (k % 2 == 0) ? 0.0 : 0.5;
+    for (int m = -layers; m < levels; ++m)
+      for (int j = 0; j < around; ++j) {
+        const double theta = 2.0 * std::numbers::pi * (j + shift) / around;
+        const double cs = std::cos(theta), sn = std::sin(theta);
+        out.push_back({{c.x + rho * cs, c.y + rho * sn, (m + 0.5) * dp}, {-cs, -sn, 0.0}});
+      }
+  }
+  const int n = lattice_lines(tank, dp);
+  for (int k = 0; k < layers; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const Vec3 q{(i + 0.5) * dp, (j + 0.5) * dp, -(k + 0.5) * dp};
+        if (tank.from_axis(q) < tank.radius) out.push_back({q, {0.0, 0.0, 1.0}});
+      }
+  return out;
+}
+
+std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth) {
+  std::vector<Vec3> out;
+  const int n = lattice_lines(tank, dp);
+  for (int k = 0; (k + 0.5) * dp < depth; ++k)  // the rows of the sections' fill
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const Vec3 q{(i + 0.5) * dp, (j + 0.5) * dp, (k + 0.5) * dp};
+        if (tank.from_axis(q) <= tank.radius - 0.5 * dp * (1.0 - 1e-9)) out.push_back(q);
+      }
+  return out;
+}
+
+double cylinder_first_sloshing_omega(double radius, double depth, double gravity) {
+  const double k = 1.8412 / radius;
+  return std::sqrt(gravity * k * std::tanh(k * depth));
+}
+
+}  // namespace sloshsph

@@ -1,0 +1,55 @@
+#pragma once
+// Upright circular cylinders (issue 31, section 2): `[tank] dimensions = 3, shape = "cylinder"`,
+// radius R and wall height. Axes as for the prism tanks: x and y horizontal, z up; the axis of the
+// cylinder stands at (R, R), so that the tank fills 0 <= x, y <= 2R like a box of side 2R, and the
+// bottom is z = 0.
+#include <cmath>
+#include <vector>
+
+#include "sloshsph/core/vec2.hpp"
+#include "sloshsph/geometry/prism_tank.hpp"
+
+namespace sloshsph {
+
+struct CylinderTank {
+  double radius = 0.0;  // m, inner radius R
+  double height = 0.0;  // m, wall height above the bottom
+
+  Vec2 axis() const { return {radius, radius}; }
+  // The horizontal distance of p from the axis.
+  double from_axis(Vec3 p) const { return std::hypot(p.x - radius, p.y - radius); }
+  // Positive inside: the smaller of R - r and z (the wall extended up without limit, as the
+  // sections' are). Exact inside; below the bottom and outside the side at once, the larger of
+  // the two distances (at the edge, at most the true distance).
+  double signed_distance(Vec3 p) const { return std::min(radius - from_axis(p), p.z); }
+};
+
+// Dummy wall particles, `layers` deep:
+//  * the side: layer k (0 .. layers - 1) on the cylinder of radius R + (k + 1/2) dp, n_k =
+//    round(2 pi (R + (k + 1/2) dp) / dp) particles around (the arc spacing within a few per cent of
+//    dp; odd layers turned by half a spacing), on the levels z = (m + 1/2) dp from below the bottom's
+//    layers (m = -layers) up to the top of the wall, so that the edge with the bottom is filled;
+//    inward normal towards the axis;
+//  * the bottom: `layers` planes z = -(k + 1/2) dp of the fill's lattice ((i + 1/2) dp, (j + 1/2) dp)
+//    with r < R; normal +z.
+std::vector<WallSample3> sample_walls(const CylinderTank& tank, double dp, int layers);
+
+// Fluid particles on the cubic lattice ((i + 1/2) dp, (j + 1/2) dp, (k + 1/2) dp) below `depth` (centres
+// below it, as in the sections' fill) and
+// at least dp/2 inside the side wall (r <= R - dp/2). When dp divides 2R the lattice is symmetric
+// about the axis.
+std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth);
+
+// The level that `particles` of volume dp^3 settle to in the cylinder: their volume over pi R^2.
+// Below fill.depth: the square lattice does not reach the round wall everywhere (a ring of gaps
+// about dp/2 to dp wide), and the water fills that ring once it settles.
+inline double cylinder_settled_level(const CylinderTank& tank, std::size_t particles, double dp) {
+  return static_cast<double>(particles) * dp * dp * dp / (3.141592653589793 * tank.radius * tank.radius);
+}
+
+// The first sloshing mode of an upright cylinder of radius R filled to h (linear potential
+// theory; e.g. Ibrahim 2005, ch. 2): omega^2 = g k tanh(k h), k = 1.8412 / R, 1.8412 the first
+// zero of J1'.
+double cylinder_first_sloshing_omega(double radius, double depth, double gravity);
+
+}  // namespace sloshsph
