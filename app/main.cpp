@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv) {
   using namespace sloshsph;
-  CLI::App app{"sloshsph: 2D SPH simulation of liquid sloshing in tanks and tuned liquid dampers"};
+  CLI::App app{"sloshsph: 2D and 3D SPH simulation of liquid sloshing in tanks and tuned liquid dampers"};
   app.set_version_flag("--version", std::string("sloshsph ") + kVersion + " (" + kGitRevision + ")");
   app.require_subcommand(1);
   for (int k = 0; k < argc; ++k) app::command_line() += (k ? " " : "") + std::string(argv[k]);

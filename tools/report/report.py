@@ -36,9 +36,27 @@ DESCRIPTIONS = {
     "pair_contacts": "pair-contact corrections (cumulative)", "closest_pair": "closest two fluid particles (/ dp)",
     "x_s": "structure displacement", "v_s": "structure velocity", "a_s": "structure acceleration",
     "F_TLD": "TLD force on the structure",
+    # 3D runs (summary.json "dimensions": 3): y is the breadth, z is up.
+    "y_base": "base displacement along y", "v_base_y": "base velocity along y", "a_base_y": "base acceleration along y",
+    "F_sw_y": "sloshing force along y, F_wy − m_w·Ÿ", "F_wz": "vertical wall force",
 }
-BASE = ["x_base", "v_base", "a_base"]
-FORCES = ["F_w", "F_sw", "F_wy"]
+BASE = ["x_base", "y_base", "v_base", "v_base_y", "a_base", "a_base_y"]
+FORCES = ["F_w", "F_sw", "F_wy", "F_sw_y", "F_wz"]
+
+
+def three_d(run):
+    return run.summary.get("dimensions") == 3
+
+
+def description(run, name):
+    if name == "F_wy" and three_d(run):
+        return "wall force along y (the breadth)"
+    return DESCRIPTIONS.get(name)
+
+
+def per_what(run):
+    """The extent the run's forces and energies are for: per metre of a 2D tank, or a whole 3D one."""
+    return "whole tank" if three_d(run) else "per metre"
 ENERGY = ["E_kin", "E_pot", "W_base"]
 DIAGNOSTICS = ["max_speed", "dt", "ppe_iterations", "leaked", "wall_contacts", "pair_contacts", "closest_pair",
                "fluid_mass"]
@@ -140,7 +158,8 @@ def header_section(rep):
         ("threads", fmt(s.get("threads"))),
         ("dp, h", f"{fmt(run.summary_float('dp_m'))} m, {fmt(run.summary_float('h_m'))} m"),
         ("dt", f"{fmt(run.summary_float('dt_s'))} s" + (" (adaptive)" if s.get("dt_adaptive") else "")),
-        ("fluid mass m_w", f"{fmt(run.fluid_mass())} kg/m (final {fmt(run.summary_float('final_fluid_mass_kg_per_m'))})"),
+        ("fluid mass m_w", f"{fmt(run.fluid_mass())} {run.unit('fluid_mass')} (final "
+                           f"{fmt(run.summary_float('final_fluid_mass_kg' if three_d(run) else 'final_fluid_mass_kg_per_m'))})"),
         ("first sloshing frequency ω1 (linear)", f"{fmt(run.summary_float('omega1_linear_rad_s'))} rad/s"),
     ]
     if run.omega():
@@ -205,7 +224,7 @@ def history_figure(rep, names, stem, suptitle, filtered=True, normalise=True, ex
             if rep.window and filtered:
                 ax.axvspan(rep.window[0], rep.window[1], color="gold", alpha=0.15, lw=0,
                            label=f"steady-state window ({rep.window[2]} cycles)")
-            desc = DESCRIPTIONS.get(name)
+            desc = description(run, name)
             ax.set_title(f"{name}: {desc}" if desc else name, fontsize=10, loc="left")
             ax.set_ylabel(label(run, name))
             ax.grid(True, alpha=0.3)
@@ -268,7 +287,7 @@ def histories_section(rep):
         parts.append(impact_table(rep, peaks))
     if forces:
         parts.append("<h3 id='forces'>Forces</h3>")
-        parts.append(history_figure(rep, forces, "forces", "Forces of the walls on the fluid (per metre)",
+        parts.append(history_figure(rep, forces, "forces", f"Forces of the walls on the fluid ({per_what(run)})",
                                     extra=steady_lines(rep)))
     if screens:
         parts.append("<h3>Screen forces</h3>")
@@ -354,11 +373,11 @@ def energy_figure(rep):
         ax.plot(t, cols["E_kin"], lw=1.0, label="E_kin: kinetic energy (tank frame)")
     if "E_pot" in cols:
         e0 = cols["E_pot"][0] if np.isfinite(cols["E_pot"][0]) else 0.0
-        ax.plot(t, cols["E_pot"] - e0, lw=1.0, label=f"E_pot − E_pot(0)  [E_pot(0) = {fmt(float(e0))} J/m]")
+        ax.plot(t, cols["E_pot"] - e0, lw=1.0, label=f"E_pot − E_pot(0)  [E_pot(0) = {fmt(float(e0))} {run.unit('E_pot')}]")
     if "W_base" in cols:
         ax.plot(t, cols["W_base"], lw=1.3, label="W_base: work done by the base, ∫F_w dX")
     ax.set_xlabel("time t (s)")
-    ax.set_ylabel("energy per metre (J/m)")
+    ax.set_ylabel(f"energy ({rep.run.unit('E_kin')})")
     ax.set_title("Energies of the fluid", fontsize=12)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")
@@ -448,7 +467,7 @@ def steady_section(rep, note):
         return f"<p>{esc(note)}</p>"
     parts = [f"<p>Excitation ω = {fmt(h['omega_rad_s'])} rad/s, T = {fmt(h['period_s'])} s, "
              f"X0 = {fmt(h['amplitude_X0_m'])} m, depth h = {fmt(h['depth_m'])} m, "
-             f"m_w = {fmt(h['fluid_mass_kg_per_m'])} kg/m.</p>"]
+             f"m_w = {fmt(h['fluid_mass_kg_per_m'])} {rep.run.unit('fluid_mass')}.</p>"]
     if note:
         parts.append(f"<div class='banner warn'>{esc(note)}</div>")
         return "".join(parts)
@@ -578,6 +597,12 @@ def snapshot_entries(run_dir, notes):
     return entries
 
 
+def view_axes(run):
+    """The two coordinates a snapshot shows: x and y in 2D; x and z (a side view, the breadth's
+    particles overlaid) in 3D."""
+    return (0, 2) if three_d(run) else (0, 1)
+
+
 def particle_spacing(run, pts):
     dp = run.case_float("particles.dp") or run.summary_float("dp_m")
     if dp:
@@ -604,12 +629,15 @@ def snapshots_section(rep):
     if not loaded:
         return "<p>The particle snapshots could not be read (see the notes).</p>"
     p_lo, p_hi, v_hi = colour_limits(loaded)
-    all_pts = np.concatenate([d["points"][:, :2] for _, _, d in loaded])
+    a, b = view_axes(run)
+    all_pts = np.concatenate([d["points"][:, [a, b]] for _, _, d in loaded])
     bounds = (all_pts[:, 0].min(), all_pts[:, 0].max(), all_pts[:, 1].min(), all_pts[:, 1].max())
     dp = particle_spacing(run, loaded[0][2]["points"])
     parts = [f"<p>{len(loaded)} of {len(entries)} snapshots. Fluid particles coloured by pressure (left) and "
              "speed (right), one colour scale for all snapshots; wall particles grey. "
-             "Crosses: leaked particles (if any).</p>"]
+             "Crosses: leaked particles (if any)."
+             + (" A 3D run is seen from the side (x, z), the particles across its breadth overlaid." if three_d(run)
+                else "") + "</p>"]
     for i, (t, path, d) in enumerate(loaded):
         png = snapshot_figure(rep, t, d, (p_lo, p_hi, v_hi), bounds, dp)
         stem = f"snapshot_{i:02d}"
@@ -629,7 +657,7 @@ def colour_limits(loaded):
             ps.append(np.asarray(d["pressure"], dtype=float)[fluid])
         if "velocity" in d:
             v = np.asarray(d["velocity"], dtype=float)
-            vs.append(np.hypot(v[fluid, 0], v[fluid, 1]))
+            vs.append(np.linalg.norm(v[fluid, :3], axis=1))
     p = np.concatenate(ps) if ps else np.zeros(1)
     v = np.concatenate(vs) if vs else np.zeros(1)
     p = p[np.isfinite(p)] if np.isfinite(p).any() else np.zeros(1)
@@ -657,16 +685,17 @@ def snapshot_figure(rep, t, d, limits, bounds, dp):
     panel_w = 5.0
     panel_h = float(np.clip(panel_w * h / w, 1.6, 7.0))
     fig, axes = plt.subplots(1, 2, figsize=(2 * panel_w + 2.2, panel_h + 1.1))
-    pts = np.asarray(d["points"], dtype=float)
+    a, b = view_axes(run)
+    pts = np.asarray(d["points"], dtype=float)[:, [a, b]]
     fluid = fluid_mask(d)
     fields = []
     if "pressure" in d:
         fields.append(("pressure p (Pa)", np.asarray(d["pressure"], dtype=float), "viridis", p_lo, p_hi))
     if "velocity" in d:
         v = np.asarray(d["velocity"], dtype=float)
-        fields.append(("speed |u| (m/s)", np.hypot(v[:, 0], v[:, 1]), "magma", 0.0, v_hi))
+        fields.append(("speed |u| (m/s)", np.linalg.norm(v[:, :3], axis=1), "magma", 0.0, v_hi))
     when = f"t = {t:.3f} s" if math.isfinite(t) else ""
-    leaks = [(l.get("x"), l.get("y")) for l in run.summary.get("leaks_first_100", []) or []
+    leaks = [(l.get("x"), l.get("z" if three_d(run) else "y")) for l in run.summary.get("leaks_first_100", []) or []
              if isinstance(l, dict) and (not math.isfinite(t) or l.get("time_s", 0) <= t + 1e-9)]
     collections = []
     for k, ax in enumerate(axes):
@@ -690,7 +719,7 @@ def snapshot_figure(rep, t, d, limits, bounds, dp):
             lx, ly = np.array(leaks, dtype=float).T
             ax.plot(lx, ly, "rx", ms=5, label="leaked")
         ax.set_xlabel("x (m)")
-        ax.set_ylabel("y (m)")
+        ax.set_ylabel("z (m)" if three_d(run) else "y (m)")
     fig.tight_layout()
     size = marker_size(fig, axes[0], dp)
     for c in collections:

@@ -205,8 +205,10 @@ class Run:
         return default_unit(name)
 
     def fluid_mass(self):
-        """m_w (kg/m): summary fluid_mass_kg_per_m, else the first fluid_mass sample."""
+        """m_w (kg/m; 3D: kg): summary fluid_mass_kg_per_m (3D: fluid_mass_kg), else the first fluid_mass sample."""
         m = self.summary_float("fluid_mass_kg_per_m")
+        if m is None:
+            m = self.summary_float("fluid_mass_kg")  # a 3D run: the whole tank's
         if m is None and len(self.columns.get("fluid_mass", [])):
             m = float(self.columns["fluid_mass"][0])
         return m if m and m > 0 else None
