@@ -170,6 +170,28 @@ void add_breadth_warning(const CaseSpec& spec, std::vector<std::string>& warning
   warnings.push_back(text);
 }
 
+// The parts of a 3D scene that do not depend on the tank's shape: the probes' points, the time-step
+// warnings, and the particles at rest below `still_level` from the fluid and wall samples.
+Scene3 three_d_scene(const CaseSpec& spec, std::shared_ptr<const TankGeometry> tank, double breadth, double still_level,
+                     const std::vector<Vec3>& fluid, const std::vector<WallSample3>& walls) {
+  if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
+  Scene3 scene;
+  scene.tank = std::move(tank);
+  scene.breadth = breadth;
+  for (const PressureProbeSpec& probe : spec.pressure_probes) {
+    const Vec3 at = at_breadth(probe.position, probe.across);
+    scene.pressure_sensors.push_back({at, at, false});
+  }
+  add_time_step_warnings(spec, scene.warnings);
+  scene.dp = spec.particles.dp;
+  scene.h = spec.particles.kernel_ratio * spec.particles.dp;
+  scene.still_level = still_level;
+  scene.particles = particles_at_rest<3>(fluid, walls, scene.dp, still_level, spec.fluid.density, spec.fluid.gravity);
+  scene.initial_fluid_count = scene.particles.n_fluid;
+  scene.initial_fluid_mass = scene.particles.mass * static_cast<double>(scene.particles.n_fluid);
+  return scene;
+}
+
 // An upright cylinder: the fluid on the cubic lattice inside it, its side and bottom walls; the
 // scene's section is the rectangle 2R x height it stands in.
 Scene3 build_cylinder_scene(const CaseSpec& spec) {
@@ -178,27 +200,13 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
   box.shape = "rectangle";
   auto tank = std::make_shared<TankGeometry>(make_tank(box, spec.where("tank.radius")));
   check_probes_3d(spec, [&cylinder](Vec3 p) { return cylinder.signed_distance(p); }, tank->y_top);
-  Scene3 scene;
-  scene.tank = tank;
-  scene.breadth = 2.0 * cylinder.radius;
+  const double dp = spec.particles.dp;
+  Scene3 scene = three_d_scene(spec, tank, 2.0 * cylinder.radius, spec.fill.depth, fill_fluid(cylinder, dp, spec.fill.depth),
+                               sample_walls(cylinder, dp, spec.particles.wall_layers));
   scene.cylinder = cylinder;
-  for (const PressureProbeSpec& probe : spec.pressure_probes) {
-    const Vec3 at = at_breadth(probe.position, probe.across);
-    scene.pressure_sensors.push_back({at, at, false});
-  }
-  add_time_step_warnings(spec, scene.warnings);
-  scene.dp = spec.particles.dp;
-  scene.h = spec.particles.kernel_ratio * spec.particles.dp;
-  scene.still_level = spec.fill.depth;
-  const std::vector<Vec3> fluid = fill_fluid(cylinder, scene.dp, spec.fill.depth);
-  if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
-  scene.particles = particles_at_rest<3>(fluid, sample_walls(cylinder, scene.dp, spec.particles.wall_layers), scene.dp,
-                                         scene.still_level, spec.fluid.density, spec.fluid.gravity);
-  scene.initial_fluid_count = scene.particles.n_fluid;
-  scene.initial_fluid_mass = scene.particles.mass * static_cast<double>(scene.particles.n_fluid);
   // The square lattice leaves a ring of gaps inside the round wall: the water settles lower.
-  const double level = cylinder_settled_level(cylinder, scene.particles.n_fluid, scene.dp);
-  if (spec.fill.depth - level > 0.2 * scene.dp) {
+  const double level = cylinder_settled_level(cylinder, scene.particles.n_fluid, dp);
+  if (spec.fill.depth - level > 0.2 * dp) {
     char text[400];
     std::snprintf(text, sizeof text,
                   "fill.depth: the %zu particles of the cubic lattice inside the cylinder hold the water of a depth of "
@@ -217,25 +225,11 @@ Scene3 build_scene3(const CaseSpec& spec) {
   auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));
   const PrismTank prism{*tank, spec.tank.breadth};
   check_probes_3d(spec, [&prism](Vec3 p) { return prism.signed_distance(p); }, tank->y_top);
-  Scene3 scene;
-  scene.tank = tank;
-  scene.breadth = prism.breadth;
-  for (const PressureProbeSpec& probe : spec.pressure_probes) {
-    const Vec3 at = at_breadth(probe.position, probe.across);
-    scene.pressure_sensors.push_back({at, at, false});
-  }
-  add_time_step_warnings(spec, scene.warnings);
-  scene.dp = spec.particles.dp;
-  scene.h = spec.particles.kernel_ratio * spec.particles.dp;
-  scene.still_level = tank->y_bottom + spec.fill.depth;
-  const std::vector<Vec3> fluid = fill_fluid(prism, scene.dp, spec.fill.depth);
-  if (fluid.empty()) throw InputError(spec.where("fill.depth"), "fill.depth", "no fluid particle fits in the tank");
-  add_fill_warning(spec, *tank, fill_fluid(*tank, scene.dp, spec.fill.depth).size(), scene.warnings);
+  const double dp = spec.particles.dp;
+  Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth,
+                               fill_fluid(prism, dp, spec.fill.depth), sample_walls(prism, dp, spec.particles.wall_layers));
+  add_fill_warning(spec, *tank, fill_fluid(*tank, dp, spec.fill.depth).size(), scene.warnings);
   add_breadth_warning(spec, scene.warnings);
-  scene.particles = particles_at_rest<3>(fluid, sample_walls(prism, scene.dp, spec.particles.wall_layers), scene.dp,
-                                         scene.still_level, spec.fluid.density, spec.fluid.gravity);
-  scene.initial_fluid_count = scene.particles.n_fluid;
-  scene.initial_fluid_mass = scene.particles.mass * static_cast<double>(scene.particles.n_fluid);
   return scene;
 }
 
