@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/linear/closed_form.hpp"
+#include "sloshsph/linear/three_d_modes.hpp"
 #include "sloshsph/run/modes_summary.hpp"
 
 namespace sloshsph::app {
@@ -29,6 +30,28 @@ void print_tmd(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& res
     std::printf("  %11.3f%% %11.3f%% %16.4f %16.4f%s\n", 100.0 * r.zeta_tank, 100.0 * r.effective_damping,
                 r.displacement_rms_ratio, r.acceleration_rms_ratio, k + 1 == responses.size() ? "  (optimum)" : "");
   }
+}
+
+// A 3D box or cylinder: its closed-form modes (linear/three_d_modes.hpp), labelled (m, n).
+int print_three_d_modes(const CaseSpec& spec, int count, bool json) {
+  const std::vector<ThreeDMode> modes = three_d_modes(spec, count);
+  const bool cylinder = spec.tank.shape == "cylinder";
+  if (json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const ThreeDMode& m : modes)
+      list.push_back({{"m", m.m}, {"n", m.n}, {"omega", m.omega}, {"frequency", m.omega / (2.0 * M_PI)}});
+    std::printf("%s\n", nlohmann::json{{"modes", list}}.dump(2).c_str());
+    return 0;
+  }
+  std::printf("%s: 3D %s, depth %.6g m (linear potential theory, closed form; %s)\n", spec.source.c_str(),
+              cylinder ? "upright cylinder" : "box", spec.fill.depth,
+              cylinder ? "(m, n): m nodal diameters, n-th zero of J_m'" : "(m, n): half-waves along x and along y");
+  std::printf("%8s %14s %14s %12s\n", "(m, n)", "omega [rad/s]", "frequency [Hz]", "period [s]");
+  for (const ThreeDMode& m : modes) {
+    const double f = m.omega / (2.0 * M_PI);
+    std::printf("  (%d, %d) %14.6f %14.6f %12.6f\n", m.m, m.n, m.omega, f, 1.0 / f);
+  }
+  return 0;
 }
 
 }  // namespace
@@ -60,6 +83,7 @@ Command add_modes_command(CLI::App& app) {
   add_set_option(sub, o->sets);
   return {sub, [o]() {
             const CaseSpec spec = load_case(o->case_path, o->sets);
+            if (spec.tank.dimensions == 3) return print_three_d_modes(spec, o->count, o->json);
             const ModesSummary m = modes_summary(spec, o->count, o->tank_damping, o->tank_frequency_scale);
             if (o->json) {
               std::printf("%s\n", modes_json(m).dump(2).c_str());
