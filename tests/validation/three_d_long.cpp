@@ -72,6 +72,31 @@ void measure_frequency(const std::vector<double>& time, const std::vector<double
     run.omega = std::numbers::pi * static_cast<double>(crossings.size() - 1) / (crossings.back() - crossings.front());
 }
 
+// Runs the scheme on `p` under gravity alone for `duration`, samples the fluid's mean of
+// `observable` after each step, and gives run its frequency (measure_frequency) and the count of
+// fluid particles outside the tank at the end (in 2D its section, in 3D the prism).
+template <int D, class Observable>
+void run_free(const CaseSpec& spec, const PrismTank& tank, double dt, double duration, Observable observable,
+              BasicParticles<D>& p, ModeRun& run) {
+  BasicIsphScheme<D> scheme(spec, spec.particles.kernel_ratio * spec.particles.dp);
+  typename BasicIsphScheme<D>::Input in;
+  in.dt = dt;
+  component_ref(in.frame.uniform, D - 1) = -spec.fluid.gravity;
+  scheme.initialise(p, in.frame);
+  std::vector<double> time, signal;
+  const int steps = static_cast<int>(std::lround(duration / dt));
+  for (int s = 1; s <= steps; ++s) {
+    scheme.step(p, in);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < p.n_fluid; ++i) sum += observable(p.position[i]);
+    time.push_back(s * dt);
+    signal.push_back(sum / static_cast<double>(p.n_fluid));
+  }
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    run.outside += container_signed_distance<D>(tank.section, tank.breadth, p.position[i]) > 0.0 ? 0 : 1;
+  measure_frequency(time, signal, run);
+}
+
 // The free (1,0) mode from its linear velocity field (see the test below), in 2D or 3D.
 template <int D>
 ModeRun first_mode(double L, double B, double h, double dp, double dt, double duration, double a) {
@@ -89,28 +114,7 @@ ModeRun first_mode(double L, double B, double h, double dp, double dt, double du
     if constexpr (D == 2) p.velocity[i] = {u, w};
     else p.velocity[i] = {u, 0.0, w};
   }
-  BasicIsphScheme<D> scheme(spec, spec.particles.kernel_ratio * dp);
-  typename BasicIsphScheme<D>::Input in;
-  in.dt = dt;
-  if constexpr (D == 2) in.frame.uniform = {0.0, -g};
-  else in.frame.uniform = {0.0, 0.0, -g};
-  scheme.initialise(p, in.frame);
-  std::vector<double> time, centre;
-  const int steps = static_cast<int>(std::lround(duration / dt));
-  for (int s = 1; s <= steps; ++s) {
-    scheme.step(p, in);
-    double x = 0.0;
-    for (std::size_t i = 0; i < p.n_fluid; ++i) x += p.position[i].x;
-    time.push_back(s * dt);
-    centre.push_back(x / static_cast<double>(p.n_fluid));
-  }
-  for (std::size_t i = 0; i < p.n_fluid; ++i) {
-    double inside = 0.0;
-    if constexpr (D == 2) inside = tank.section.signed_distance(p.position[i]);
-    else inside = tank.signed_distance(p.position[i]);
-    run.outside += inside > 0.0 ? 0 : 1;
-  }
-  measure_frequency(time, centre, run);
+  run_free(spec, tank, dt, duration, [](Vec<D> r) { return r.x; }, p, run);
   return run;
 }
 
@@ -135,7 +139,7 @@ TEST(ValidationLong, BoxFirstSloshingModeInThreeDimensions) {
 // and free for `duration`; its frequency from the crossings of the mean of an observable that the
 // mode moves: x (m = 1, n = 0), y (0, 1), (x - L/2)(y - B/2) (1, 1).
 ModeRun box_mode(const CaseSpec& spec, double B, int m, int n, double dt, double duration, double a) {
-  const double L = spec.tank.length, h = spec.fill.depth, g = spec.fluid.gravity, dp = spec.particles.dp;
+  const double L = spec.tank.length, h = spec.fill.depth, g = spec.fluid.gravity;
   const PrismTank tank{make_tank(spec.tank, "test"), B};
   Particles3 p = testing::particles_at_rest(spec, tank);
   const double kx = m * std::numbers::pi / L, ky = n * std::numbers::pi / B, k = std::hypot(kx, ky);
@@ -148,25 +152,10 @@ ModeRun box_mode(const CaseSpec& spec, double B, int m, int n, double dt, double
     p.velocity[i] = {-c * kx * sx * cy * std::cosh(k * r.z), -c * ky * cx * sy * std::cosh(k * r.z),
                      c * k * cx * cy * std::sinh(k * r.z)};
   }
-  IsphScheme3 scheme(spec, spec.particles.kernel_ratio * dp);
-  IsphScheme3::Input in;
-  in.dt = dt;
-  in.frame.uniform = {0.0, 0.0, -g};
-  scheme.initialise(p, in.frame);
-  std::vector<double> time, signal;
-  const int steps = static_cast<int>(std::lround(duration / dt));
-  for (int s = 1; s <= steps; ++s) {
-    scheme.step(p, in);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < p.n_fluid; ++i) {
-      const Vec3 r = p.position[i];
-      sum += m == 1 && n == 1 ? (r.x - 0.5 * L) * (r.y - 0.5 * B) : (m == 1 ? r.x : r.y);
-    }
-    time.push_back(s * dt);
-    signal.push_back(sum / static_cast<double>(p.n_fluid));
-  }
-  for (std::size_t i = 0; i < p.n_fluid; ++i) run.outside += tank.signed_distance(p.position[i]) > 0.0 ? 0 : 1;
-  measure_frequency(time, signal, run);
+  run_free(
+      spec, tank, dt, duration,
+      [m, n, L, B](Vec3 r) { return m == 1 && n == 1 ? (r.x - 0.5 * L) * (r.y - 0.5 * B) : (m == 1 ? r.x : r.y); }, p,
+      run);
   return run;
 }
 
