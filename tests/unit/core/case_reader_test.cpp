@@ -188,6 +188,15 @@ TEST(CaseReader, TimeStepAboveTheStabilityBound) {
   expect_error(kMinimal, {"time.dt=0.05"}, "time.dt", "stability bound");
 }
 
+// With time.adaptive the step bounds itself by the flow's speed each step, so its ceiling is
+// held only to the body-force bound 0.25 sqrt(h / g): here h = 1.4 x 10 mm, 9.4 ms, against the
+// fixed step's 0.4 dp / sqrt(g depth) = 2.55 ms.
+TEST(CaseReader, AdaptiveCeilingIsHeldToTheBodyForceBound) {
+  EXPECT_NO_THROW(read_case_text(kMinimal, "case.toml", {"time.adaptive=true", "time.dt=0.009"}));
+  expect_error(kMinimal, {"time.dt=0.009"}, "time.dt", "stability bound");
+  expect_error(kMinimal, {"time.adaptive=true", "time.dt=0.01"}, "time.dt", "0.25 sqrt(h / g)");
+}
+
 TEST(CaseReader, ResolvedCaseReadsBackToTheSameSpec) {
   const CaseSpec a = read_case_text(default_case_text(), "default.toml");
   const CaseSpec b = read_case_text(resolved_case_toml(a), "resolved.toml");
