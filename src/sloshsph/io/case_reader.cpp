@@ -599,7 +599,8 @@ void check_particle_estimate(const CaseSpec& s) {
 
 // What a 3D case (tank.dimensions = 3, issue 31) can hold so far: the ISPH scheme in a tank
 // extruded over its breadth or an upright cylinder, moved by a translation along
-// excitation.direction, with gauges and point pressure probes. Everything else is refused by name rather than run as if it were 2D.
+// excitation.direction, with gauges and point pressure probes. Everything else is refused by name
+// rather than run as if it were 2D.
 // In 2D, excitation.direction can only be the x axis.
 void check_dimensions(const CaseSpec& s) {
   auto fail = [&](const std::string& key, const std::string& what) { throw InputError(s.where(key), key, what); };
