@@ -39,6 +39,8 @@ DESCRIPTIONS = {
     # 3D runs (summary.json "dimensions": 3): y is the breadth, z is up.
     "y_base": "base displacement along y", "v_base_y": "base velocity along y", "a_base_y": "base acceleration along y",
     "F_sw_y": "sloshing force along y, F_wy − m_w·Ÿ", "F_wz": "vertical wall force",
+    "x_s_y": "structure displacement along y", "v_s_y": "structure velocity along y",
+    "a_s_y": "structure acceleration along y", "F_TLD_y": "TLD force on the structure along y",
 }
 BASE = ["x_base", "y_base", "v_base", "v_base_y", "a_base", "a_base_y"]
 FORCES = ["F_w", "F_sw", "F_wy", "F_sw_y", "F_wz"]
@@ -60,7 +62,7 @@ def per_what(run):
 ENERGY = ["E_kin", "E_pot", "W_base"]
 DIAGNOSTICS = ["max_speed", "dt", "ppe_iterations", "leaked", "wall_contacts", "pair_contacts", "closest_pair",
                "fluid_mass"]
-STRUCTURE = ["x_s", "v_s", "a_s", "F_TLD"]
+STRUCTURE = ["x_s", "x_s_y", "v_s", "v_s_y", "a_s", "a_s_y", "F_TLD", "F_TLD_y"]  # _y: a 3D 2-DOF structure
 MAX_PANELS = 10  # per figure; more columns are split over several figures
 
 
@@ -765,7 +767,7 @@ def structure_section(rep):
         rows.append([esc(name), esc(entry["unit"]), fmt(entry["peak_abs"]), fmt(entry["rms"]),
                      fmt(entry["rms_second_half"])])
     parts.append(rl.table(["signal", "unit", "peak |value|", "RMS", "RMS, second half"], rows))
-    psd_html = structure_psd(rep, [n for n in ("x_s", "a_s") if n in run.columns], info)
+    psd_html = structure_psd(rep, [n for n in ("x_s", "a_s", "x_s_y", "a_s_y") if n in run.columns], info)
     parts.append(psd_html or "<p>The record is too short for a power spectral density (PSD).</p>")
     parts.append(admittance_part(rep, info))
     rep.analysis["structure"] = info

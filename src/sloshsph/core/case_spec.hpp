@@ -370,6 +370,9 @@ struct CaseSpec {
   std::vector<ScreenSpec> screens;
   std::vector<PlateSpec> plates;
   std::optional<StructureSpec> structure;  // [structure]: the tank moves with an SDOF structure
+  // [structure.y] (3D only): the structure's second sway mode, along y; tank_width, tanks,
+  // rigid_mass and ground are copied from [structure].
+  std::optional<StructureSpec> structure_y;
   OutputSpec output;
   RunSpec run;
 

@@ -471,10 +471,10 @@ StructureLoadSpec read_structure_load(TableReader& r) {
   return l;
 }
 
-// [structure]: an SDOF structure given by (mass, stiffness, damping) or (mass, frequency,
-// damping_ratio), resolved here to M, K, C (K = M w^2, C = 2 zeta M w, w = 2 pi f).
-StructureSpec read_structure(TableReader& r) {
-  StructureSpec s;
+// One sway mode of the structure given by (mass, stiffness, damping) or (mass, frequency,
+// damping_ratio), resolved here to M, K, C (K = M w^2, C = 2 zeta M w, w = 2 pi f), with its
+// initial state and its load: the keys [structure] and [structure.y] have in common.
+void read_sway_mode(TableReader& r, StructureSpec& s) {
   s.mass = r.positive("mass");
   const std::optional<double> stiffness = r.optional_positive("stiffness");
   const std::optional<double> frequency = r.optional_positive("frequency");
@@ -492,13 +492,35 @@ StructureSpec read_structure(TableReader& r) {
   if (!(std::isfinite(s.stiffness) && s.stiffness > 0.0))
     r.fail(frequency ? "frequency" : "stiffness", "gives a stiffness M (2 pi f)^2 that is not a finite number > 0");
   if (!std::isfinite(s.damping)) r.fail(has_damping ? "damping" : "damping_ratio", "gives an infinite damping");
+  s.initial_displacement = r.number("initial_displacement", s.initial_displacement);
+  s.initial_velocity = r.number("initial_velocity", s.initial_velocity);
+  if (auto load = r.table("load")) s.load = read_structure_load(*load);
+}
+
+// [structure]: the SDOF structure (its sway along x), and in 3D [structure.y], the second sway
+// mode along y (issue 31: the building as a 2-DOF structure). The tanks, their rigid mass and the
+// ground motion are the structure's, so [structure.y] takes them from [structure].
+StructureSpec read_structure(TableReader& r, std::optional<StructureSpec>& sway_y) {
+  StructureSpec s;
+  read_sway_mode(r, s);
   s.tank_width = r.positive("tank_width", s.tank_width);
   s.tanks = static_cast<int>(r.integer("tanks", s.tanks, 0, 1000000));
   s.rigid_mass = r.non_negative("rigid_mass", s.rigid_mass);
   s.ground_from_excitation = r.choice("ground", "none", {"none", "excitation"}) == "excitation";
-  s.initial_displacement = r.number("initial_displacement", s.initial_displacement);
-  s.initial_velocity = r.number("initial_velocity", s.initial_velocity);
-  if (auto load = r.table("load")) s.load = read_structure_load(*load);
+  if (auto y = r.table("y")) {
+    for (const char* shared : {"tank_width", "tanks", "rigid_mass", "ground"})
+      if (y->has(shared))
+        y->fail(shared, "belongs in [structure]: the tanks and the ground motion are the structure's, the same for "
+                        "both sway modes");
+    StructureSpec sy;
+    read_sway_mode(*y, sy);
+    sy.tank_width = s.tank_width;
+    sy.tanks = s.tanks;
+    sy.rigid_mass = s.rigid_mass;
+    sy.ground_from_excitation = s.ground_from_excitation;
+    y->finish();
+    sway_y = sy;
+  }
   r.finish();
   return s;
 }
@@ -562,10 +584,14 @@ void check_counts(const CaseSpec& s, Fail&& fail) {
 void check_structure_consistency(const CaseSpec& s) {
   if (!s.structure) return;
   auto fail = [&](const std::string& key, const std::string& what) { throw InputError(s.where(key), key, what); };
-  const StructureLoadSpec& load = s.structure->load;
-  if (load.type == StructureLoadType::noise && load.target_peak_mg && !(s.structure->damping > 0.0))
-    fail("structure.load.target_peak_mg", "scales the noise by the response of the damped structure alone; an undamped "
-                                          "structure has no finite response to white noise: give damping > 0 or 'rms'");
+  for (const auto& [mode, prefix] : {std::pair{&s.structure, "structure."}, std::pair{&s.structure_y, "structure.y."}}) {
+    if (!*mode) continue;
+    const StructureLoadSpec& load = (*mode)->load;
+    if (load.type == StructureLoadType::noise && load.target_peak_mg && !((*mode)->damping > 0.0))
+      fail(std::string(prefix) + "load.target_peak_mg",
+           "scales the noise by the response of the damped structure alone; an undamped structure has no finite "
+           "response to white noise: give damping > 0 or 'rms'");
+  }
   const bool excited = s.excitation.type != ExcitationType::none;
   if (s.structure->ground_from_excitation) {
     if (!excited)
@@ -607,8 +633,14 @@ void check_dimensions(const CaseSpec& s) {
   if (s.tank.dimensions == 2) {
     if (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0)
       fail("excitation.direction", "is for 3D tanks (tank.dimensions = 3): a 2D tank moves along x only");
+    if (s.structure_y)
+      fail("structure.y", "is the structure's sway along y, for 3D tanks (tank.dimensions = 3): a 2D tank moves "
+                          "along x only");
     return;
   }
+  if (s.structure && s.locations.count("structure.tank_width"))
+    fail("structure.tank_width", "is the width of a 2D section; a 3D tank's forces are the whole tank's (its breadth "
+                                 "is tank.breadth): remove it");
   const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH scheme with "
                               "a translation along excitation.direction, gauges and point pressure probes";
   if (s.scheme.type != "isph") fail("scheme.type", "\"" + s.scheme.type + "\"" + not_yet);
@@ -618,7 +650,6 @@ void check_dimensions(const CaseSpec& s) {
   if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
   if (!s.screens.empty()) fail("screens", "a screen" + not_yet);
   if (!s.plates.empty()) fail("plates", "an elastic plate" + not_yet);
-  if (s.structure) fail("structure", "the structure (a 2-DOF building for 3D)" + not_yet);
   if (s.tank.breadth < 4.0 * s.particles.dp)
     fail("particles.dp", "too coarse: the tank is fewer than 4 particles across its breadth (tank.breadth = " +
                              std::to_string(s.tank.breadth) + " m)");
@@ -773,7 +804,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "probes", false, [&](TableReader& t) { read_probes(t, spec); });
   read_screens(r, spec);
   read_plates(r, spec);
-  section(r, "structure", false, [&](TableReader& t) { spec.structure = read_structure(t); });
+  section(r, "structure", false, [&](TableReader& t) { spec.structure = read_structure(t, spec.structure_y); });
   section(r, "output", false, [&](TableReader& t) { spec.output = read_output(t); });
   section(r, "run", false, [&](TableReader& t) { spec.run = read_run(t); });
   r.finish();
@@ -986,14 +1017,11 @@ static toml::table excitation_table(const ExcitationSpec& x) {
   return e;
 }
 
-static toml::table structure_table(const StructureSpec& x) {
+// One sway mode's keys (read_sway_mode).
+static toml::table sway_mode_table(const StructureSpec& x) {
   toml::table t{{"mass", x.mass},
                 {"stiffness", x.stiffness},
                 {"damping", x.damping},
-                {"tank_width", x.tank_width},
-                {"tanks", x.tanks},
-                {"rigid_mass", x.rigid_mass},
-                {"ground", x.ground_from_excitation ? "excitation" : "none"},
                 {"initial_displacement", x.initial_displacement},
                 {"initial_velocity", x.initial_velocity}};
   const StructureLoadSpec& l = x.load;
@@ -1032,6 +1060,18 @@ static toml::table structure_table(const StructureSpec& x) {
       break;
   }
   t.insert("load", load);
+  return t;
+}
+
+// [structure] and, in 3D, [structure.y]; a 3D structure has no tank_width (read_structure).
+static toml::table structure_table(const CaseSpec& s) {
+  const StructureSpec& x = *s.structure;
+  toml::table t = sway_mode_table(x);
+  if (s.tank.dimensions == 2) t.insert("tank_width", x.tank_width);
+  t.insert("tanks", x.tanks);
+  t.insert("rigid_mass", x.rigid_mass);
+  t.insert("ground", x.ground_from_excitation ? "excitation" : "none");
+  if (s.structure_y) t.insert("y", sway_mode_table(*s.structure_y));
   return t;
 }
 
@@ -1150,7 +1190,7 @@ std::string resolved_case_toml(const CaseSpec& s) {
     plates.push_back(t);
   }
   if (!plates.empty()) root.insert("plates", plates);
-  if (s.structure) root.insert("structure", structure_table(*s.structure));
+  if (s.structure) root.insert("structure", structure_table(s));
   root.insert("output", toml::table{{"sample_interval", s.output.sample_interval},
                                     {"snapshot_interval", s.output.snapshot_interval},
                                     {"snapshot_walls", s.output.snapshot_walls},

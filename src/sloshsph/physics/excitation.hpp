@@ -18,6 +18,9 @@ struct BaseMotion {
   double angular_velocity = 0.0;      // rad/s
   double angular_acceleration = 0.0;  // rad/s^2
   Vec2 pivot;                         // m, tank frame: the axis of the pitch
+  // 3D (issue 31): the horizontal motion along y (the tank's breadth); x above is then the motion
+  // along x, y above the vertical one (in_tank_axes). Zero in 2D.
+  double displacement_y = 0.0, velocity_y = 0.0, acceleration_y = 0.0;
 };
 
 // The base motion of an excitation at any time, with exactly consistent displacement,
@@ -63,28 +66,36 @@ inline FrameForce frame_force(double gravity, const BaseMotion& m) {
 }
 
 // 3D (issue 31): the base translates along the horizontal unit vector `direction` = (d_x, d_y)
-// (excitation.direction); the motion's x is the displacement along it, its y the vertical one.
-// A vector of the motion in 3D tank axes: (x d_x, x d_y, y).
-inline Vec3 along_direction(Vec2 motion, Vec2 direction) {
-  return {motion.x * direction.x, motion.x * direction.y, motion.y};
+// (excitation.direction): BaseMotionSource gives the motion along it in x and the vertical one in
+// y. The same motion with its horizontal parts along the tank's x and y axes (a structure's
+// sway is then added to each).
+inline BaseMotion in_tank_axes(BaseMotion m, Vec2 direction) {
+  m.displacement_y = m.displacement.x * direction.y;
+  m.velocity_y = m.velocity.x * direction.y;
+  m.acceleration_y = m.acceleration.x * direction.y;
+  m.displacement.x *= direction.x;
+  m.velocity.x *= direction.x;
+  m.acceleration.x *= direction.x;
+  return m;
 }
 
-// The body force of a translating 3D tank: gravity (-z) less the base acceleration. No rotation
-// in 3D yet (the case reader refuses a pitch).
-inline FrameForce3 frame_force3(double gravity, const BaseMotion& m, Vec2 direction) {
+// A vector of a motion in tank axes (in_tank_axes) as a 3D vector: (x, y, vertical).
+inline Vec3 displacement3(const BaseMotion& m) { return {m.displacement.x, m.displacement_y, m.displacement.y}; }
+inline Vec3 acceleration3(const BaseMotion& m) { return {m.acceleration.x, m.acceleration_y, m.acceleration.y}; }
+
+// The body force of a translating 3D tank (its motion in tank axes): gravity (-z) less the base
+// acceleration. No rotation in 3D yet (the case reader refuses a pitch).
+inline FrameForce3 frame_force3(double gravity, const BaseMotion& m) {
   FrameForce3 f;
-  f.uniform = Vec3{0.0, 0.0, -gravity} - along_direction(m.acceleration, direction);
+  f.uniform = Vec3{0.0, 0.0, -gravity} - acceleration3(m);
   return f;
 }
 
+// The body force of a motion: in 2D as the excitation gives it, in 3D in tank axes.
 template <int D>
-BasicFrameForce<D> frame_force_in(double gravity, const BaseMotion& m, Vec2 direction) {
-  if constexpr (D == 2) {
-    (void)direction;
-    return frame_force(gravity, m);
-  } else {
-    return frame_force3(gravity, m, direction);
-  }
+BasicFrameForce<D> frame_force_in(double gravity, const BaseMotion& m) {
+  if constexpr (D == 2) return frame_force(gravity, m);
+  else return frame_force3(gravity, m);
 }
 
 }  // namespace sloshsph

@@ -88,14 +88,19 @@ BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start)
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
   start_plates();
-  scheme_.initialise(scene_.particles, frame_of(base_.at(0.0)));
+  scheme_.initialise(scene_.particles, frame_of(ground_motion(0.0)));
   if (start == SimulationStart::settled) settle();
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k) gauge_datum_.push_back(surface_height(k));
   if (spec_.structure) {
     // The structure is released at t = 0 with the settled fluid at rest in the tank.
     structure_.emplace(*spec_.structure, spec_.time.end);
     structure_->set_fluid_mass(fluid_mass());
-    structure_->start(base_.at(0.0).acceleration.x);
+    structure_->start(ground_motion(0.0).acceleration.x);
+  }
+  if (spec_.structure_y) {  // 3D: the sway along y, released alike
+    structure_y_.emplace(*spec_.structure_y, spec_.time.end);
+    structure_y_->set_fluid_mass(fluid_mass());
+    structure_y_->start(ground_motion(0.0).acceleration_y);
   }
   build_columns();
 } catch (const InputError& e) {
@@ -135,13 +140,25 @@ void BasicSimulation<D>::advance_plates(double dt, const FrameForce& frame) {
 }
 
 template <int D>
+BaseMotion BasicSimulation<D>::ground_motion(double t) const {
+  if constexpr (D == 2) return base_.at(t);
+  else return in_tank_axes(base_.at(t), spec_.excitation.direction);
+}
+
+template <int D>
 BaseMotion BasicSimulation<D>::tank_motion() const {
-  BaseMotion m = base_.at(time_);
-  if (!structure_) return m;
+  BaseMotion m = ground_motion(time_);
   // The tank is fixed to the structure: ground motion plus the structure's relative motion.
-  m.displacement.x += structure_->displacement();
-  m.velocity.x += structure_->velocity();
-  m.acceleration.x = structure_->absolute_acceleration();
+  if (structure_) {
+    m.displacement.x += structure_->displacement();
+    m.velocity.x += structure_->velocity();
+    m.acceleration.x = structure_->absolute_acceleration();
+  }
+  if (structure_y_) {
+    m.displacement_y += structure_y_->displacement();
+    m.velocity_y += structure_y_->velocity();
+    m.acceleration_y = structure_y_->absolute_acceleration();
+  }
   return m;
 }
 
@@ -159,8 +176,6 @@ void BasicSimulation<D>::build_columns() {
   using B = const SampleBasis&;
   // 2D: per metre of breadth; 3D: the whole tank.
   const std::string energy_unit = D == 2 ? "J/m" : "J";
-  const Vec2 dir = spec_.excitation.direction;  // 3D: the base moves along it (x_base is its x part)
-  (void)dir;
   columns_.clear();
   add_column("time", "s", [](S s, B) { return s.time_; });
   if constexpr (D == 2) {
@@ -168,12 +183,12 @@ void BasicSimulation<D>::build_columns() {
     add_column("v_base", "m/s", [](S, B b) { return b.motion.velocity.x; });
     add_column("a_base", "m/s^2", [](S, B b) { return b.motion.acceleration.x; });
   } else {
-    add_column("x_base", "m", [dir](S, B b) { return b.motion.displacement.x * dir.x; });
-    add_column("y_base", "m", [dir](S, B b) { return b.motion.displacement.x * dir.y; });
-    add_column("v_base", "m/s", [dir](S, B b) { return b.motion.velocity.x * dir.x; });
-    add_column("v_base_y", "m/s", [dir](S, B b) { return b.motion.velocity.x * dir.y; });
-    add_column("a_base", "m/s^2", [dir](S, B b) { return b.motion.acceleration.x * dir.x; });
-    add_column("a_base_y", "m/s^2", [dir](S, B b) { return b.motion.acceleration.x * dir.y; });
+    add_column("x_base", "m", [](S, B b) { return b.motion.displacement.x; });
+    add_column("y_base", "m", [](S, B b) { return b.motion.displacement_y; });
+    add_column("v_base", "m/s", [](S, B b) { return b.motion.velocity.x; });
+    add_column("v_base_y", "m/s", [](S, B b) { return b.motion.velocity_y; });
+    add_column("a_base", "m/s^2", [](S, B b) { return b.motion.acceleration.x; });
+    add_column("a_base_y", "m/s^2", [](S, B b) { return b.motion.acceleration_y; });
   }
   for (std::size_t k = 0; k < spec_.gauges.size(); ++k)
     add_column("eta:" + spec_.gauges[k].name, "m", [k](S s, B) { return s.surface_height(k) - s.gauge_datum_[k]; });
@@ -200,9 +215,9 @@ void BasicSimulation<D>::build_columns() {
     add_column("F_wy", "N/m", [](S, B b) { return b.wall_force.y; });
   } else {
     add_column("F_w", "N", [](S, B b) { return b.wall_force.x; });
-    add_column("F_sw", "N", [dir](S, B b) { return b.wall_force.x - b.fluid_mass * b.base_acceleration * dir.x; });
+    add_column("F_sw", "N", [](S, B b) { return b.wall_force.x - b.fluid_mass * b.base_acceleration; });
     add_column("F_wy", "N", [](S, B b) { return b.wall_force.y; });
-    add_column("F_sw_y", "N", [dir](S, B b) { return b.wall_force.y - b.fluid_mass * b.base_acceleration * dir.y; });
+    add_column("F_sw_y", "N", [](S, B b) { return b.wall_force.y - b.fluid_mass * b.base_acceleration_y; });
     add_column("F_wz", "N", [](S, B b) { return b.wall_force.z; });
   }
   add_column("W_base", energy_unit, [](S s, B) { return s.work_on_fluid_; });
@@ -239,19 +254,30 @@ void BasicSimulation<D>::build_columns() {
   // [structure] (docs/case-format.md). The energies are relative to the ground (absolute without
   // ground motion): E_s = (M v^2 + K x^2)/2 of the structure alone; E_TLD = n b [sum m (u + v_s)^2 / 2
   // + m g y] + n b m_r v_s^2 / 2, the liquid of all tanks with the tank frame's velocity u turned
-  // into the ground frame. With no damping, no load and no ground motion E_s + E_TLD is conserved
-  // but for the fluid's own dissipation.
+  // into the ground frame (in 3D v_s = (v_s, v_s_y, 0) and b = 1). With no damping, no load and no
+  // ground motion E_s (+ E_s_y) + E_TLD is conserved but for the fluid's own dissipation.
   add_column("x_s", "m", [](S s, B) { return s.structure_->displacement(); });
   add_column("v_s", "m/s", [](S s, B) { return s.structure_->velocity(); });
   add_column("a_s", "m/s^2", [](S s, B) { return s.structure_->absolute_acceleration(); });
   add_column("F_TLD", "N", [](S s, B) { return s.acc_dt_ > 0.0 ? s.acc_tld_force_ / s.acc_dt_ : 0.0; });
   add_column("F_e", "N", [](S s, B) { return s.structure_->external_force(); });
   add_column("E_s", "J", [](S s, B) { return s.structure_->structure_energy(); });
+  if (structure_y_) {
+    add_column("x_s_y", "m", [](S s, B) { return s.structure_y_->displacement(); });
+    add_column("v_s_y", "m/s", [](S s, B) { return s.structure_y_->velocity(); });
+    add_column("a_s_y", "m/s^2", [](S s, B) { return s.structure_y_->absolute_acceleration(); });
+    add_column("F_TLD_y", "N", [](S s, B) { return s.acc_dt_ > 0.0 ? s.acc_tld_force_y_ / s.acc_dt_ : 0.0; });
+    add_column("F_e_y", "N", [](S s, B) { return s.structure_y_->external_force(); });
+    add_column("E_s_y", "J", [](S s, B) { return s.structure_y_->structure_energy(); });
+  }
   add_column("E_TLD", "J", [](S s, B b) {
     const StructureCoupling& st = *s.structure_;
     const double vs = st.velocity(), nb = st.tank_factor();
-    const double liquid = b.kinetic_energy + vs * b.momentum_x + 0.5 * s.fluid_mass() * vs * vs + b.potential_energy;
-    return nb * (liquid + 0.5 * st.spec().rigid_mass * vs * vs);
+    const double vy = s.structure_y_ ? s.structure_y_->velocity() : 0.0;
+    const double v2 = vs * vs + vy * vy;
+    const double liquid = b.kinetic_energy + vs * b.momentum_x + vy * b.momentum_y + 0.5 * s.fluid_mass() * v2 +
+                          b.potential_energy;
+    return nb * (liquid + 0.5 * st.spec().rigid_mass * v2);
   });
 }
 
@@ -267,7 +293,7 @@ void BasicSimulation<D>::settle() {
   if (duration <= 0.0) return;
   const double tau = 0.1 * duration;
   BasicStepInput<D> in;
-  in.frame = frame_of(base_.at(0.0));
+  in.frame = frame_of(ground_motion(0.0));
   BasicParticles<D>& p = scene_.particles;
   for (double t = 0.0; t < duration - 1e-12;) {
     in.dt = std::min(spec_.time.dt, duration - t);
@@ -334,15 +360,19 @@ void BasicSimulation<D>::step() {
   if (!(dt > 0.0)) return;
   const BaseMotion before = tank_motion();
   // Body force at the middle of the step: second-order in time for the imposed motion.
-  BaseMotion mid = base_.at(time_ + 0.5 * dt);
-  std::optional<StructureCoupling> structure_before;  // restored if the fluid step fails
+  BaseMotion mid = ground_motion(time_ + 0.5 * dt);
+  // Restored if the fluid step fails.
+  std::optional<StructureCoupling> structure_before = structure_, structure_y_before = structure_y_;
   if (structure_) {
-    structure_before = structure_;
     // Thesis 4.2.3: the structure moves first (with the sloshing force of the last step), the
     // fluid then feels the structure's mean absolute acceleration over the step (a_n + a_n+1)/2,
     // which is exactly Newmark's velocity change / dt (run/structure_coupling.hpp).
-    structure_->advance(dt, sloshing_force_, base_.at(time_ + dt).acceleration.x);
+    structure_->advance(dt, sloshing_force_, ground_motion(time_ + dt).acceleration.x);
     mid.acceleration.x = 0.5 * (before.acceleration.x + structure_->absolute_acceleration());
+  }
+  if (structure_y_) {  // 3D: the sway along y, the same way
+    structure_y_->advance(dt, sloshing_force_y_, ground_motion(time_ + dt).acceleration_y);
+    mid.acceleration_y = 0.5 * (before.acceleration_y + structure_y_->absolute_acceleration());
   }
   BasicStepInput<D> in;
   in.dt = dt;
@@ -358,16 +388,15 @@ void BasicSimulation<D>::step() {
   try {
     scheme_.step(scene_.particles, in);
   } catch (...) {
-    if (structure_before) structure_ = std::move(structure_before);
+    structure_ = std::move(structure_before);
+    structure_y_ = std::move(structure_y_before);
     throw;
   }
 
-  BaseMotion after = base_.at(time_ + dt);
+  BaseMotion after = ground_motion(time_ + dt);
   if (!plates_.empty()) advance_plates(dt, frame_force(spec_.fluid.gravity, after));  // 2D only
-  if (structure_) {
-    after.displacement.x += structure_->displacement();
-    after.velocity.x += structure_->velocity();
-  }
+  if (structure_) after.displacement.x += structure_->displacement();
+  if (structure_y_) after.displacement_y += structure_y_->displacement();
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
   Vec<D> wall_force = scheme_.diagnostics().wall_force;
   if (spec_.scheme.pair_contact)  // before the wall contact, which then has the last word at the walls
@@ -388,12 +417,21 @@ void BasicSimulation<D>::step() {
     sloshing_force_ = wall_force.x - fluid_mass() * mid.acceleration.x;
     acc_tld_force_ += dt * structure_->tld_force(wall_force.x, mid.acceleration.x);
   }
+  if constexpr (D == 3)
+    if (structure_y_) {
+      sloshing_force_y_ = wall_force.y - fluid_mass() * mid.acceleration_y;
+      acc_tld_force_y_ += dt * structure_y_->tld_force(wall_force.y, mid.acceleration_y);
+    }
   shifts_limited_ += scheme_.diagnostics().shifts_limited;
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
   acc_base_acceleration_ += dt * mid.acceleration.x;
-  if constexpr (D == 2) work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
-  else work_on_fluid_ += dot(wall_force, along_direction(after.displacement - before.displacement, spec_.excitation.direction));
+  if constexpr (D == 2) {
+    work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
+  } else {
+    acc_base_acceleration_y_ += dt * mid.acceleration_y;
+    work_on_fluid_ += dot(wall_force, displacement3(after) - displacement3(before));
+  }
 
   ++steps_;
   const bool fixed = !spec_.time.adaptive && spec_.scheme.type == "isph";
@@ -425,7 +463,8 @@ void BasicSimulation<D>::remove_leaked() {
   for (std::size_t i = 0; i < p.n_fluid; ++i)
     if (out[i]) leaks_.push_back({time_, p.id[i], p.position[i]});
   p.remove_fluid(out);
-  if (structure_) structure_->set_fluid_mass(fluid_mass());  // the added mass follows the fluid
+  for (std::optional<StructureCoupling>* st : {&structure_, &structure_y_})  // the added mass follows the fluid
+    if (*st) (*st)->set_fluid_mass(fluid_mass());
   const double fraction = static_cast<double>(leaks_.size()) / static_cast<double>(scene_.initial_fluid_count);
   if (fraction > spec_.run.max_leaked_fraction) {
     const LeakRecord& first = leaks_.front();
@@ -521,11 +560,13 @@ typename BasicSimulation<D>::SampleBasis BasicSimulation<D>::sample_basis() {
   if (acc_dt_ > 0.0) {
     b.wall_force = acc_wall_force_ / acc_dt_;
     b.base_acceleration = acc_base_acceleration_ / acc_dt_;
+    b.base_acceleration_y = acc_base_acceleration_y_ / acc_dt_;
   }
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     b.kinetic_energy += 0.5 * p.mass * norm2(p.velocity[i]);
     b.potential_energy += p.mass * spec_.fluid.gravity * (component(p.position[i], D - 1) - scene_.tank->y_bottom);
     b.momentum_x += p.mass * p.velocity[i].x;
+    if constexpr (D == 3) b.momentum_y += p.mass * p.velocity[i].y;
   }
   return b;
 }
@@ -535,7 +576,9 @@ void BasicSimulation<D>::reset_interval_sums() {
   acc_dt_ = 0.0;
   acc_wall_force_ = {};
   acc_base_acceleration_ = 0.0;
+  acc_base_acceleration_y_ = 0.0;
   acc_tld_force_ = 0.0;
+  acc_tld_force_y_ = 0.0;
   for (Vec2& f : acc_screen_force_) f = {};
   for (Vec2& f : acc_plate_force_) f = {};
 }
@@ -602,6 +645,15 @@ void BasicSimulation<D>::save_state(StateWriter& w) const {
   w.value("sim.acc_tld_force", acc_tld_force_);
   w.value("sim.has_structure", static_cast<std::uint8_t>(structure_.has_value()));
   if (structure_) structure_->save_state(w);
+  if constexpr (D == 3) {  // issue 31's 2-DOF structure; optional on reading (older 3D checkpoints)
+    w.value("sim.acc_base_acceleration_y", acc_base_acceleration_y_);
+    w.value("sim.has_structure_y", static_cast<std::uint8_t>(structure_y_.has_value()));
+    if (structure_y_) {
+      w.value("sim.sloshing_force_y", sloshing_force_y_);
+      w.value("sim.acc_tld_force_y", acc_tld_force_y_);
+      structure_y_->save_state(w);
+    }
+  }
   w.value("sim.plates", static_cast<std::uint64_t>(plates_.size()));
   for (std::size_t k = 0; k < plates_.size(); ++k) plates_[k].save_state(w, "plate." + std::to_string(k));
   w.array("sim.acc_plate_force", acc_plate_force_);
@@ -634,6 +686,18 @@ void BasicSimulation<D>::load_state(StateReader& r) {
   if (has_structure != structure_.has_value())
     throw InputError(spec_.source, "structure", "the checkpoint and the case disagree on [structure]");
   if (structure_) structure_->load_state(r);
+  if (D == 3 && r.next_is("sim.acc_base_acceleration_y")) {
+    acc_base_acceleration_y_ = r.value<double>("sim.acc_base_acceleration_y");
+    if ((r.value<std::uint8_t>("sim.has_structure_y") != 0) != structure_y_.has_value())
+      throw InputError(spec_.source, "structure.y", "the checkpoint and the case disagree on [structure.y]");
+    if (structure_y_) {
+      sloshing_force_y_ = r.value<double>("sim.sloshing_force_y");
+      acc_tld_force_y_ = r.value<double>("sim.acc_tld_force_y");
+      structure_y_->load_state(r);
+    }
+  } else if (structure_y_) {
+    throw InputError(spec_.source, "structure.y", "the checkpoint has no [structure.y] (written before it existed)");
+  }
   if (r.value<std::uint64_t>("sim.plates") != plates_.size())
     throw InputError(spec_.source, "plates", "the checkpoint and the case disagree on the number of [[plates]]");
   for (std::size_t k = 0; k < plates_.size(); ++k) plates_[k].load_state(r, "plate." + std::to_string(k));

@@ -42,11 +42,13 @@ class BasicSimulation;
 // fluid inside each plate. Per metre of breadth in 2D (kg/m, N/m, J/m), whole in 3D (kg, N, J).
 template <int D>
 struct BasicSampleBasis {
-  BaseMotion motion;               // along excitation.direction in 3D (physics/excitation.hpp)
+  BaseMotion motion;               // in 3D in tank axes (physics/excitation.hpp, in_tank_axes)
   double fluid_mass = 0.0;         // kg/m
   Vec<D> wall_force;               // N/m, interval mean of the walls' (and screens') force on the fluid
-  double base_acceleration = 0.0;  // m/s^2, interval mean of the frame's acceleration (along the direction)
-  double kinetic_energy = 0.0, potential_energy = 0.0, momentum_x = 0.0;  // of the fluid, tank frame
+  double base_acceleration = 0.0;    // m/s^2, interval mean of the frame's acceleration along x
+  double base_acceleration_y = 0.0;  // m/s^2, the same along y (3D)
+  double kinetic_energy = 0.0, potential_energy = 0.0;  // of the fluid, tank frame
+  double momentum_x = 0.0, momentum_y = 0.0;            // of the fluid, tank frame (momentum_y: 3D)
   std::vector<double> probe_pressure;  // Pa, each pressure probe (one cell grid for all)
   std::vector<double> plate_inside;    // fluid particles inside each plate
 };
@@ -72,8 +74,9 @@ struct BasicLeakRecord {
 enum class SimulationStart { settled, for_checkpoint };
 
 // In 2D (Simulation) every feature of a case; in 3D (Simulation3, tank.dimensions = 3) the ISPH
-// scheme, a translation along excitation.direction, gauges and point probes (issue 31): the
-// screens, plates and structure below are 2D only, and the case reader refuses them in 3D.
+// scheme, a translation along excitation.direction, gauges, point probes and the structure with
+// its sway along x and y (issue 31): the screens and plates below are 2D only, and the case
+// reader refuses them in 3D.
 template <int D>
 class BasicSimulation {
  public:
@@ -103,10 +106,15 @@ class BasicSimulation {
   const ScreenParticles& screens() const { return screens_; }
   // The imposed motion of [excitation]; with [structure] the ground motion under the structure.
   const BaseMotionSource& base() const { return base_; }
+  // The imposed motion of [excitation] at t, in 3D in tank axes (in_tank_axes): with [structure]
+  // the ground motion under it.
+  BaseMotion ground_motion(double t) const;
   // The motion of the tank now: the imposed base motion, or the structure's (ground + relative).
   BaseMotion tank_motion() const;
-  // [structure]: the structure carrying the tank (nullptr without one).
+  // [structure]: the structure carrying the tank (nullptr without one); in 3D its sway along x.
   const StructureCoupling* structure() const { return structure_ ? &*structure_ : nullptr; }
+  // [structure.y] (3D): the structure's sway along y (nullptr without one).
+  const StructureCoupling* structure_y() const { return structure_y_ ? &*structure_y_ : nullptr; }
   // [[plates]]: the elastic plates, in case order.
   const std::vector<PlateCoupling>& plates() const { return plates_; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
@@ -149,9 +157,7 @@ class BasicSimulation {
   // section's sampled distance and the end walls.
   double container_distance(Vec<D> p) const;
   // The tank-frame body force of a motion of the tank.
-  BasicFrameForce<D> frame_of(const BaseMotion& m) const {
-    return frame_force_in<D>(spec_.fluid.gravity, m, spec_.excitation.direction);
-  }
+  BasicFrameForce<D> frame_of(const BaseMotion& m) const { return frame_force_in<D>(spec_.fluid.gravity, m); }
   BasicWallContact<D> wall_contact(double dt);
   void start_plates();
   void advance_plates(double dt, const FrameForce& frame);
@@ -189,11 +195,15 @@ class BasicSimulation {
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;
   Vec<D> acc_wall_force_;
-  double acc_base_acceleration_ = 0.0;
+  double acc_base_acceleration_ = 0.0, acc_base_acceleration_y_ = 0.0;  // along x and (3D) y
   double work_on_fluid_ = 0.0;  // J/m, integral of F_w dX since t = 0
   // [structure] (thesis 4.2.3): the SDOF carrying the tank, the sloshing force of the last
   // fluid step (N/m, fed to the structure in the next one) and the interval sum of dt x F_TLD.
   std::optional<StructureCoupling> structure_;
+  // [structure.y] (3D): the sway along y, its sloshing force (N) and interval sum of dt x F_TLD_y.
+  std::optional<StructureCoupling> structure_y_;
+  double sloshing_force_y_ = 0.0;
+  double acc_tld_force_y_ = 0.0;
   // [[plates]] (Dincer 2019): elastic plates moved by the fluid, and the interval sums of dt x the
   // fluid force on each.
   std::vector<PlateCoupling> plates_;

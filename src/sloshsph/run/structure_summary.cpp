@@ -86,19 +86,19 @@ void add_motion(nlohmann::json& j, const std::vector<double>& x, const std::vect
 }  // namespace
 
 StructureSeries structure_series(const std::vector<std::string>& names, const std::vector<std::vector<double>>& columns,
-                                 const std::string& gauge) {
+                                 const std::string& gauge, const std::string& suffix) {
   auto column = [&](const std::string& name) -> const std::vector<double>* {
     for (std::size_t k = 0; k < names.size() && k < columns.size(); ++k)
       if (names[k] == name) return &columns[k];
     return nullptr;
   };
   StructureSeries s;
-  for (const char* name : {"time", "x_s", "a_s", "F_e"})
-    if (!column(name)) throw std::invalid_argument(std::string("structure summary: no column '") + name + "'");
+  for (const std::string& name : {std::string("time"), "x_s" + suffix, "a_s" + suffix, "F_e" + suffix})
+    if (!column(name)) throw std::invalid_argument("structure summary: no column '" + name + "'");
   s.time = *column("time");
-  s.x_s = *column("x_s");
-  s.a_s = *column("a_s");
-  s.F_e = *column("F_e");
+  s.x_s = *column("x_s" + suffix);
+  s.a_s = *column("a_s" + suffix);
+  s.F_e = *column("F_e" + suffix);
   if (!gauge.empty()) {
     const auto* eta = column("eta:" + gauge);
     if (!eta) throw std::invalid_argument("structure summary: no wave gauge column 'eta:" + gauge + "'");

@@ -29,10 +29,12 @@ struct StructureSeries {
 
 // Picks the columns from a run's series (`names[k]` names `columns[k]`; time first). `gauge`
 // names the wave gauge for the wave-height admittance; empty: the first "eta:" column, if any.
+// `suffix` "_y" picks the sway along y of a 3D structure (x_s_y, a_s_y, F_e_y).
 // Throws std::invalid_argument when x_s, a_s or F_e is missing (not a [structure] run) or
 // `gauge` is not a column.
 StructureSeries structure_series(const std::vector<std::string>& names,
-                                 const std::vector<std::vector<double>>& columns, const std::string& gauge = "");
+                                 const std::vector<std::vector<double>>& columns, const std::string& gauge = "",
+                                 const std::string& suffix = "");
 
 struct StructureSummaryOptions {
   double skip_seconds = 0.0;     // start-up left out of every statistic (the thesis uses the whole hour)

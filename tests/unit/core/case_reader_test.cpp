@@ -357,6 +357,75 @@ TEST(CaseReader, CylinderKeys) {
   EXPECT_EQ(again.tank.height, 0.3);
 }
 
+// Issue 31, section 3: the 2-DOF structure of a 3D case. [structure] is the sway along x,
+// [structure.y] the sway along y with its own mass, stiffness (or frequency), damping (or ratio),
+// initial state and load; the tanks, their rigid mass and the ground are [structure]'s. Exact
+// values where no arithmetic is done; the resolved case reads back the same.
+const std::string kTwoDof = R"(
+[structure]
+mass = 1000.0
+stiffness = 4000.0
+damping = 20.0
+tanks = 2
+rigid_mass = 5.0
+ground = "excitation"
+
+[structure.y]
+mass = 500.0
+frequency = 0.5
+damping_ratio = 0.02
+initial_displacement = 0.01
+
+[structure.y.load]
+type = "harmonic"
+amplitude = 3.0
+frequency = 0.4
+)";
+
+TEST(CaseReader, TwoDofStructureKeys) {
+  const CaseSpec s = read_case_text(box3d_text() + kTwoDof, "case.toml", {});
+  ASSERT_TRUE(s.structure && s.structure_y);
+  EXPECT_EQ(s.structure->mass, 1000.0);
+  EXPECT_EQ(s.structure->stiffness, 4000.0);
+  EXPECT_EQ(s.structure->tanks, 2);
+  EXPECT_EQ(s.structure_y->mass, 500.0);
+  const double w = 2.0 * 3.141592653589793238 * 0.5;
+  EXPECT_DOUBLE_EQ(s.structure_y->stiffness, 500.0 * w * w);
+  EXPECT_DOUBLE_EQ(s.structure_y->damping, 2.0 * 0.02 * 500.0 * w);
+  EXPECT_EQ(s.structure_y->initial_displacement, 0.01);
+  EXPECT_EQ(s.structure_y->load.type, StructureLoadType::harmonic);
+  EXPECT_EQ(s.structure_y->load.amplitude, 3.0);
+  EXPECT_EQ(s.structure_y->tanks, 2);         // shared with [structure]
+  EXPECT_EQ(s.structure_y->rigid_mass, 5.0);  // shared with [structure]
+  EXPECT_TRUE(s.structure_y->ground_from_excitation);  // the harmonic of box3d_diagonal.toml
+  EXPECT_EQ(s.structure->load.type, StructureLoadType::none);
+  const std::string resolved = resolved_case_toml(s);
+  EXPECT_EQ(resolved.find("tank_width"), std::string::npos);  // a 3D tank's forces are whole
+  const CaseSpec again = read_case_text(resolved, "resolved.toml", {});
+  ASSERT_TRUE(again.structure_y);
+  EXPECT_EQ(again.structure_y->stiffness, s.structure_y->stiffness);
+  EXPECT_EQ(again.structure_y->damping, s.structure_y->damping);
+  EXPECT_EQ(again.structure_y->load.frequency, 0.4);
+  EXPECT_EQ(again.structure_y->tanks, 2);
+}
+
+TEST(CaseReader, TwoDofStructureKeysAreChecked) {
+  const std::string box = box3d_text();
+  expect_error(kMinimal + kTwoDof, {}, "structure.y", "3D tanks");
+  expect_error(box + kTwoDof, {"structure.tank_width=2.0"}, "structure.tank_width",
+               "whole tank");
+  expect_error(box + kTwoDof, {"structure.y.tanks=3"}, "structure.y.tanks",
+               "belongs in [structure]");
+  expect_error(box + kTwoDof, {"structure.y.ground=\"excitation\""},
+               "structure.y.ground", "belongs in [structure]");
+  expect_error(box + kTwoDof, {"structure.y.mass=-1.0"}, "structure.y.mass", "");
+  expect_error(box + kTwoDof, {"structure.y.damping=1.0"}, "structure.y.damping_ratio",
+               "only one");
+  expect_error(box + kTwoDof, {"structure.y.load.type=\"noise\""},
+               "structure.y.load.target_peak_mg", "");
+  expect_error(box + kTwoDof, {"structure.y.colour=1.0"}, "structure.y.colour", "");
+}
+
 // 3D keys in a 2D case, and what 3D cannot do yet, are refused by name.
 TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(kMinimal, {"tank.breadth=0.2"}, "tank.breadth", "dimensions = 3");

@@ -62,6 +62,18 @@ TEST(Checkpoint, ThreeDimensionalCaseResumesBitwise) {
   expect_bitwise_resume<3>(spec);
 }
 
+// The same box on a 2-DOF structure (issue 31, section 3), the base motion its ground: both sway
+// modes, their force histories and the y interval sums are in the checkpoint.
+TEST(Checkpoint, TwoDofStructureResumesBitwise) {
+  const std::string structure = "structure={mass=20.0, frequency=0.8, damping_ratio=0.01, ground=\"excitation\", "
+                                "y={mass=15.0, frequency=1.1, damping_ratio=0.02, initial_velocity=0.02}}";
+  const CaseSpec spec = resolve_case(read_case_file(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/box3d_diagonal.toml",
+                                                    {"particles.dp=0.02", "time.settle=0.05", "time.dt=0.002",
+                                                     "output.snapshot_interval=0", structure}));
+  ASSERT_TRUE(spec.structure_y);
+  expect_bitwise_resume<3>(spec);
+}
+
 // Particle shifting (issue 30) keeps nothing between steps but the count of cut shifts, which the
 // checkpoint holds: resumed runs with it on are bitwise too.
 TEST(Checkpoint, ShiftingResumesBitwise) {
