@@ -770,6 +770,7 @@ def structure_section(rep):
     psd_html = structure_psd(rep, [n for n in ("x_s", "a_s", "x_s_y", "a_s_y") if n in run.columns], info)
     parts.append(psd_html or "<p>The record is too short for a power spectral density (PSD).</p>")
     parts.append(admittance_part(rep, info))
+    parts.append(admittance_part(rep, info, "_y"))
     rep.analysis["structure"] = info
     return "".join(parts)
 
@@ -819,12 +820,13 @@ def free_decay_section(rep):
                              "free decay"))
 
 
-def admittance_part(rep, info):
+def admittance_part(rep, info, suffix=""):
     """The mechanical admittance |H(f)|² of admittance.csv (thesis eq. 4.30) beside the structure
     alone's and beside the SDOF of the effective damping ratio (the same area, Vickery et al.
-    1983), and the table of what the tank does to the structure (summary.json `structure`)."""
-    path = os.path.join(rep.run.dir, "admittance.csv")
-    block = rep.run.summary.get("structure", {}) if isinstance(rep.run.summary, dict) else {}
+    1983), and the table of what the tank does to the structure (summary.json `structure`).
+    suffix "_y": the sway along y of a 3D 2-DOF structure (admittance_y.csv, `structure_y`)."""
+    path = os.path.join(rep.run.dir, f"admittance{suffix}.csv")
+    block = rep.run.summary.get("structure" + suffix, {}) if isinstance(rep.run.summary, dict) else {}
     adm = block.get("admittance") if isinstance(block, dict) else None
     if not os.path.exists(path) or not isinstance(adm, dict):
         return ""
@@ -851,8 +853,10 @@ def admittance_part(rep, info):
         axes[1, 0].set_ylabel(f"|H(f)|² of the wave height at gauge {adm.get('wave_gauge', '?')}")
         axes[1, 0].grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("frequency (Hz)")
-    fig.suptitle(f"Mechanical admittance (thesis eq. 4.30), within the load's band {lo:g}-{hi:g} Hz", fontsize=11)
-    png = rep.save(fig, "admittance")
+    along = " along y" if suffix else ""
+    fig.suptitle(f"Mechanical admittance{along} (thesis eq. 4.30), within the load's band {lo:g}-{hi:g} Hz",
+                 fontsize=11)
+    png = rep.save(fig, "admittance" + suffix)
     alone = block.get("structure_without_tank", {})
     acc, disp = block.get("acceleration", {}), block.get("displacement", {})
     rows = [
@@ -867,10 +871,11 @@ def admittance_part(rep, info):
         ["RMS displacement (m)", fmt(disp.get("rms_m")), fmt(alone.get("displacement", {}).get("rms_m")),
          fmt(disp.get("rms_ratio_to_without_tank"))],
     ]
-    info["admittance"] = {"effective_damping_ratio": zeta, "natural_frequency_Hz": f_n,
-                          "peak_H2_displacement": float(np.max(h2)) if len(h2) else None}
-    return (rl.figure_html(png, "Mechanical admittance |H(f)|² = S(f)·K²/S0(f) of the structure's displacement "
-                                "(and of the wave height). File plots/admittance.png (and .svg).", "admittance")
+    info["admittance" + suffix] = {"effective_damping_ratio": zeta, "natural_frequency_Hz": f_n,
+                                   "peak_H2_displacement": float(np.max(h2)) if len(h2) else None}
+    return (rl.figure_html(png, f"Mechanical admittance{along} |H(f)|² = S(f)·K²/S0(f) of the structure's "
+                                f"displacement (and of the wave height). File plots/admittance{suffix}.png (and .svg).",
+                           "admittance" + suffix)
             + rl.table(["", "with the tank(s)", "structure alone, same load", "ratio"],
                        [[esc(c) if k == 0 else c for k, c in enumerate(row)] for row in rows])
             + linear_estimate_html(block.get("equivalent_tmd"), zeta))

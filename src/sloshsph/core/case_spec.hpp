@@ -266,6 +266,7 @@ struct ExcitationSpec {
   std::uint64_t seed = 1;
   double band_low = 0.05, band_high = 0.5;  // Hz
   double rms = 0.0;                  // m/s^2, RMS acceleration of the noise
+  std::string table = "excitation";  // the case's table, for messages ("excitation.y" for [excitation.y])
 };
 
 // A pitch whose angle history comes from a file (not the harmonic pitch).
@@ -364,6 +365,9 @@ struct CaseSpec {
   SchemeSpec scheme;
   TimeSpec time;
   ExcitationSpec excitation;
+  // [excitation.y] (3D only): a second, independent translation of the base along y (issue 31);
+  // [excitation] is then the motion along x. Its direction is (0, 1).
+  std::optional<ExcitationSpec> excitation_y;
   std::vector<GaugeSpec> gauges;
   std::vector<PressureProbeSpec> pressure_probes;
   std::vector<FrontProbeSpec> fronts;

@@ -247,8 +247,16 @@ void read_pitch_file_keys(TableReader& r, ExcitationSpec& e) {
   e.start = r.number("start", e.start);
 }
 
-ExcitationSpec read_excitation(TableReader& r) {
+// [excitation], and in it [excitation.y] (`along_y` non-null: the table's own keys; null: the y
+// table, whose keys are those of a translation without `direction`).
+ExcitationSpec read_excitation(TableReader& r, std::optional<ExcitationSpec>* along_y) {
   ExcitationSpec e;
+  if (!along_y) {
+    if (r.has("direction"))
+      r.fail("direction", "[excitation.y] moves the base along y; give the motion along x in [excitation]");
+    if (r.has("type") && (r.string("type") == "pitch" || r.string("type") == "none"))
+      r.fail("type", "[excitation.y] is a translation along y: harmonic, record, pulse or noise");
+  }
   const std::string type = r.choice("type", "harmonic", {"none", "harmonic", "pitch", "record", "pulse", "noise"});
   if (type == "harmonic") {
     e.type = ExcitationType::harmonic;
@@ -296,6 +304,13 @@ ExcitationSpec read_excitation(TableReader& r) {
     const Vec2 d = r.point("direction");
     if (!(norm(d) > 1e-12) || !std::isfinite(norm(d))) r.fail("direction", "expected a horizontal vector [x, y], not zero");
     e.direction = normalized(d);
+  }
+  if (along_y) {
+    if (auto y = r.table("y")) {
+      *along_y = read_excitation(*y, nullptr);
+      (*along_y)->direction = {0.0, 1.0};
+      (*along_y)->table = "excitation.y";
+    }
   }
   r.finish();
   return e;
@@ -592,7 +607,7 @@ void check_structure_consistency(const CaseSpec& s) {
            "scales the noise by the response of the damped structure alone; an undamped structure has no finite "
            "response to white noise: give damping > 0 or 'rms'");
   }
-  const bool excited = s.excitation.type != ExcitationType::none;
+  const bool excited = s.excitation.type != ExcitationType::none || s.excitation_y;
   if (s.structure->ground_from_excitation) {
     if (!excited)
       fail("structure.ground", "is \"excitation\" but the case has no [excitation] to be the ground motion");
@@ -636,8 +651,13 @@ void check_dimensions(const CaseSpec& s) {
     if (s.structure_y)
       fail("structure.y", "is the structure's sway along y, for 3D tanks (tank.dimensions = 3): a 2D tank moves "
                           "along x only");
+    if (s.excitation_y)
+      fail("excitation.y", "moves the base along y, for 3D tanks (tank.dimensions = 3): a 2D tank moves along x only");
     return;
   }
+  if (s.excitation_y && (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0))
+    fail("excitation.direction", "with [excitation.y] (the motion along y) [excitation] is the motion along x: remove "
+                                 "'direction'");
   if (s.structure && s.locations.count("structure.tank_width"))
     fail("structure.tank_width", "is the width of a 2D section; a 3D tank's forces are the whole tank's (its breadth "
                                  "is tank.breadth): remove it");
@@ -800,7 +820,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "particles", true, [&](TableReader& t) { spec.particles = read_particles(t); });
   section(r, "scheme", false, [&](TableReader& t) { spec.scheme = read_scheme(t); });
   section(r, "time", true, [&](TableReader& t) { spec.time = read_time(t); });
-  section(r, "excitation", false, [&](TableReader& t) { spec.excitation = read_excitation(t); });
+  section(r, "excitation", false, [&](TableReader& t) { spec.excitation = read_excitation(t, &spec.excitation_y); });
   section(r, "probes", false, [&](TableReader& t) { read_probes(t, spec); });
   read_screens(r, spec);
   read_plates(r, spec);
@@ -1012,6 +1032,7 @@ static toml::table excitation_table(const ExcitationSpec& x) {
       e.insert("rms", x.rms);
       break;
     case ExcitationType::none:
+      e.insert("type", "none");
       break;
   }
   return e;
@@ -1113,9 +1134,10 @@ std::string resolved_case_toml(const CaseSpec& s) {
   root.insert("scheme", scheme_table(s.scheme));
   root.insert("time", toml::table{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl},
                                   {"settle", s.time.settle}});
-  if (s.excitation.type != ExcitationType::none) {
+  if (s.excitation.type != ExcitationType::none || s.excitation_y) {
     toml::table excitation = excitation_table(s.excitation);
     if (three_d) excitation.insert("direction", toml::array{s.excitation.direction.x, s.excitation.direction.y});
+    if (s.excitation_y) excitation.insert("y", excitation_table(*s.excitation_y));
     root.insert("excitation", excitation);
   }
   toml::array gauges, pressures;

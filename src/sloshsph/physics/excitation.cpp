@@ -65,9 +65,9 @@ TimeSeries load_record(const ExcitationSpec& e) {
     o.time_factor = e.time_scale;
     o.value_factor = e.value_unit;
     o.scale = e.scale;
-    return read_two_column_csv(e.file, "excitation.file", o);
+    return read_two_column_csv(e.file, e.table + ".file", o);
   }
-  return read_peer_at2(e.file, "excitation.file", e.scale).acceleration;
+  return read_peer_at2(e.file, e.table + ".file", e.scale).acceleration;
 }
 
 // Largest angle a pitch record may hold: the harmonic pitch's `angle` limit. A record in
@@ -82,23 +82,23 @@ RecordTable read_angle_table(const ExcitationSpec& e, double end_time) {
   CsvRecordOptions o;
   o.time_factor = e.time_scale;
   o.value_factor = e.value_unit;
-  RecordTable s = read_record_table(e.file, "excitation.file", {2, 4},
+  RecordTable s = read_record_table(e.file, e.table + ".file", {2, 4},
                               "2 fields (time, angle) or 4 (time, angle, rate, acceleration)", o);
   for (double& t : s.t) t += e.start;
   if (s.values.size() == 1 && s.t.size() < 4)
-    throw InputError(e.file, "excitation.file",
+    throw InputError(e.file, e.table + ".file",
                      "a pitch record needs at least 4 rows (a not-a-knot cubic spline), found " + std::to_string(s.t.size()));
   for (std::size_t i = 0; i < s.t.size(); ++i)
     if (std::abs(s.values[0][i]) > kMaxPitchAngle)
-      throw InputError(e.file, "excitation.file",
+      throw InputError(e.file, e.table + ".file",
                        "the angle " + std::to_string(s.values[0][i] * 180.0 / std::numbers::pi) + " deg (row " +
                            std::to_string(i + 1) + " of the data) is beyond 45 deg: is excitation.unit right?");
   if (!(s.t.back() > 0.0))
-    throw InputError("", "excitation.start",
+    throw InputError("", e.table + ".start",
                      "the record ends at t = " + std::to_string(s.t.back()) +
                          " s (time_scale x its last time + start), before the run begins at t = 0");
   if (!(s.t.front() < end_time))
-    throw InputError("", "excitation.start",
+    throw InputError("", e.table + ".start",
                      "the record begins at t = " + std::to_string(s.t.front()) +
                          " s (time_scale x its first time + start), at or after the end of the run (time.end = " +
                          std::to_string(end_time) + " s)");
@@ -141,7 +141,7 @@ TimeSeries noise_record(const ExcitationSpec& e, double end_time) {
   try {
     return band_limited_white_noise(n).series;
   } catch (const std::invalid_argument& x) {
-    throw InputError("", "excitation.band", x.what());
+    throw InputError("", e.table + ".band", x.what());
   }
 }
 
@@ -158,7 +158,7 @@ BaseMotionSource::BaseMotionSource(const ExcitationSpec& spec, double end_time) 
                                                      ? BaselineCorrection::linear_velocity
                                                      : BaselineCorrection::none);
     } catch (const std::invalid_argument& x) {
-      throw InputError(spec.file, "excitation.file", x.what());
+      throw InputError(spec.file, spec.table + ".file", x.what());
     }
     record_ = r;
   }
@@ -167,7 +167,7 @@ BaseMotionSource::BaseMotionSource(const ExcitationSpec& spec, double end_time) 
     try {
       r->angle = angle_samples(spec, end_time);
     } catch (const std::invalid_argument& x) {
-      throw InputError(spec.file, "excitation.file", x.what());
+      throw InputError(spec.file, spec.table + ".file", x.what());
     }
     record_ = r;
   }

@@ -60,6 +60,18 @@ double reference_omega(const CaseSpec& spec) {
   return first_sloshing_omega(spec);
 }
 
+// [excitation.y]'s `beta` refers to the first mode across the breadth: the (0, 1) mode of a box, the
+// first mode of a cylinder. A prism's section varies along x, so its modes along y have no closed
+// form here: it takes `frequency`.
+double first_sloshing_omega_across(const CaseSpec& spec) {
+  if (spec.tank.shape == "cylinder") return first_sloshing_omega(spec);
+  if (spec.tank.shape == "rectangle")
+    return rectangular_sloshing_omega(spec.tank.breadth, spec.fill.depth, spec.fluid.gravity);
+  throw InputError(spec.where("excitation.y.beta"), "excitation.y.beta",
+                   "refers to the first mode across the breadth, known here for a box or a cylinder only; give "
+                   "'frequency' for a \"" + spec.tank.shape + "\" tank");
+}
+
 CaseSpec resolve_case(CaseSpec spec) {
   ExcitationSpec& e = spec.excitation;
   if (e.type == ExcitationType::harmonic || (e.type == ExcitationType::pitch && !is_pitch_record(e))) {
@@ -67,6 +79,16 @@ CaseSpec resolve_case(CaseSpec spec) {
     else e.omega = *e.beta * reference_omega(spec);
     if (!(e.omega > 0.0) || !std::isfinite(e.omega))
       throw InputError(spec.where("excitation.beta"), "excitation.beta", "gives no positive excitation frequency");
+  }
+  if (spec.excitation_y && spec.excitation_y->type == ExcitationType::harmonic) {
+    ExcitationSpec& y = *spec.excitation_y;
+    if (y.beta && y.beta_reference == BetaReference::thesis)
+      throw InputError(spec.where("excitation.y.beta_reference"), "excitation.y.beta_reference",
+                       "\"thesis\" is the closed form of a 2D section; across the breadth beta refers to the box's or "
+                       "cylinder's first mode (\"modal\")");
+    y.omega = y.frequency ? 2.0 * std::numbers::pi * *y.frequency : *y.beta * first_sloshing_omega_across(spec);
+    if (!(y.omega > 0.0) || !std::isfinite(y.omega))
+      throw InputError(spec.where("excitation.y.beta"), "excitation.y.beta", "gives no positive excitation frequency");
   }
   return spec;
 }
@@ -79,6 +101,7 @@ BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start)
       scene_(build_scene_in<D>(spec)),
       container_(*scene_.tank, container_grid(), (spec.particles.wall_layers + 2) * spec.particles.dp),
       base_(spec.excitation, spec.time.end),
+      base_y_(spec.excitation_y ? BaseMotionSource(*spec.excitation_y, spec.time.end) : BaseMotionSource()),
       scheme_(spec, scene_.h),
       screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)),
       pair_contact_(spec.particles.dp) {
@@ -141,8 +164,18 @@ void BasicSimulation<D>::advance_plates(double dt, const FrameForce& frame) {
 
 template <int D>
 BaseMotion BasicSimulation<D>::ground_motion(double t) const {
-  if constexpr (D == 2) return base_.at(t);
-  else return in_tank_axes(base_.at(t), spec_.excitation.direction);
+  if constexpr (D == 2) {
+    return base_.at(t);
+  } else {
+    BaseMotion m = in_tank_axes(base_.at(t), spec_.excitation.direction);
+    if (spec_.excitation_y) {  // [excitation.y]: the independent motion along y
+      const BaseMotion y = base_y_.at(t);
+      m.displacement_y += y.displacement.x;
+      m.velocity_y += y.velocity.x;
+      m.acceleration_y += y.acceleration.x;
+    }
+    return m;
+  }
 }
 
 template <int D>

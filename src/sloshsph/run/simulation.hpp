@@ -171,6 +171,7 @@ class BasicSimulation {
   BasicScene<D> scene_;
   ContainerDistance container_;  // of the section
   BaseMotionSource base_;
+  BaseMotionSource base_y_;  // [excitation.y] (3D): the motion along y; unused without it
   BasicAnyScheme<D> scheme_;
   // Porous screens (Ergun, Morison): their particles, buffers, and the last step's loads.
   ScreenParticles screens_;

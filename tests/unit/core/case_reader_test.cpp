@@ -6,6 +6,8 @@
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/io/case_reader.hpp"
+#include "sloshsph/linear/rectangular.hpp"
+#include "sloshsph/run/simulation.hpp"
 
 namespace sloshsph {
 namespace {
@@ -424,6 +426,63 @@ TEST(CaseReader, TwoDofStructureKeysAreChecked) {
   expect_error(box + kTwoDof, {"structure.y.load.type=\"noise\""},
                "structure.y.load.target_peak_mg", "");
   expect_error(box + kTwoDof, {"structure.y.colour=1.0"}, "structure.y.colour", "");
+}
+
+// Issue 31, section 3: [excitation.y], an independent motion of the base along y. Its keys are a
+// translation's; its beta refers to the box's first mode across the breadth (exact: the closed form
+// of the same function); the resolved case reads back the same.
+TEST(CaseReader, ExcitationAlongYKeys) {
+  const std::string text =
+      box3d_text() + "\n[excitation.y]\ntype = \"harmonic\"\namplitude = 0.004\nbeta = 0.9\nramp = 1.0\n";
+  const CaseSpec s = resolve_case(read_case_text(text, "case.toml", {"excitation.direction=[1.0, 0.0]"}));
+  ASSERT_TRUE(s.excitation_y);
+  EXPECT_EQ(s.excitation_y->type, ExcitationType::harmonic);
+  EXPECT_EQ(s.excitation_y->amplitude, 0.004);
+  EXPECT_EQ(s.excitation_y->direction.y, 1.0);
+  EXPECT_EQ(s.excitation_y->omega, 0.9 * rectangular_sloshing_omega(0.2, 0.15, 9.81));
+  EXPECT_EQ(s.excitation.type, ExcitationType::harmonic);  // the motion along x is kept
+  const CaseSpec again = resolve_case(read_case_text(resolved_case_toml(s), "resolved.toml", {}));
+  ASSERT_TRUE(again.excitation_y);
+  EXPECT_EQ(again.excitation_y->omega, s.excitation_y->omega);
+  EXPECT_EQ(again.excitation_y->ramp, 1.0);
+  // Along y alone: [excitation] of type none with its y table survives the round trip too.
+  CaseSpec without_x = s;
+  without_x.excitation = ExcitationSpec{};
+  const CaseSpec y_only = read_case_text(resolved_case_toml(without_x), "resolved.toml", {});
+  EXPECT_EQ(y_only.excitation.type, ExcitationType::none);
+  ASSERT_TRUE(y_only.excitation_y);
+  EXPECT_EQ(y_only.excitation_y->amplitude, 0.004);
+}
+
+TEST(CaseReader, ExcitationAlongYKeysAreChecked) {
+  const std::string y = "\n[excitation.y]\ntype = \"harmonic\"\namplitude = 0.004\nfrequency = 1.0\n";
+  const std::string box = box3d_text() + y;
+  expect_error(kMinimal + std::string("\n[excitation]\ntype = \"none\"\n") + y, {}, "excitation.y", "3D tanks");
+  expect_error(box, {}, "excitation.direction", "motion along x");  // box3d_diagonal.toml's [2, 1]
+  expect_error(box, {"excitation.direction=[1.0, 0.0]", "excitation.y.direction=[0.0, 1.0]"}, "excitation.y.direction",
+               "along y");
+  expect_error(box, {"excitation.direction=[1.0, 0.0]", "excitation.y.type=\"pitch\""}, "excitation.y.type",
+               "translation");
+  expect_error(box, {"excitation.direction=[1.0, 0.0]", "excitation.y.type=\"none\""}, "excitation.y.type",
+               "translation");
+  expect_error(box, {"excitation.direction=[1.0, 0.0]", "excitation.y.amplitude=-1.0"}, "excitation.y.amplitude", "");
+  expect_error(box, {"excitation.direction=[1.0, 0.0]", "excitation.y.y={type=\"harmonic\"}"}, "excitation.y.y", "");
+  // beta along y: a box's or a cylinder's first mode across the breadth ("thesis" is a 2D section's
+  // closed form); a prism's section varies along x, so it needs 'frequency'.
+  const std::string beta_y = box3d_text() + "\n[excitation.y]\ntype = \"harmonic\"\namplitude = 0.004\nbeta = 1.0\n";
+  try {
+    resolve_case(read_case_text(beta_y, "case.toml", {"excitation.direction=[1.0, 0.0]", "tank.shape=\"circular\""}));
+    FAIL() << "beta along y accepted for a circular section";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "excitation.y.beta") << e.what();
+    EXPECT_NE(std::string(e.what()).find("frequency"), std::string::npos) << e.what();
+  }
+  try {
+    resolve_case(read_case_text(beta_y + "beta_reference = \"thesis\"\n", "case.toml", {"excitation.direction=[1.0, 0.0]"}));
+    FAIL() << "beta_reference = thesis along y accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "excitation.y.beta_reference") << e.what();
+  }
 }
 
 // 3D keys in a 2D case, and what 3D cannot do yet, are refused by name.
