@@ -661,9 +661,11 @@ void check_dimensions(const CaseSpec& s) {
   if (s.structure && s.locations.count("structure.tank_width"))
     fail("structure.tank_width", "is the width of a 2D section; a 3D tank's forces are the whole tank's (its breadth "
                                  "is tank.breadth): remove it");
-  const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH scheme with "
-                              "a translation along excitation.direction, gauges and point pressure probes";
-  if (s.scheme.type != "isph") fail("scheme.type", "\"" + s.scheme.type + "\"" + not_yet);
+  const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH and WCSPH "
+                              "schemes with Adami walls, translations along x and y, a 2-DOF structure, gauges and "
+                              "point pressure probes";
+  if (s.scheme.type == "wcsph" && s.scheme.wcsph.walls == WallTreatment::repulsive)
+    fail("scheme.walls", "Shao's repulsive wall particles" + not_yet);
   if (s.scheme.repulsive_walls) fail("scheme.repulsive_walls", "the repulsive wall force" + not_yet);
   if (s.excitation.type == ExcitationType::pitch) fail("excitation.type", "a pitch (rotation)" + not_yet);
   if (!s.fill.blocks.empty()) fail("fill.blocks", "fill blocks" + not_yet);

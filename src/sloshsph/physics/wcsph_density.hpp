@@ -15,12 +15,13 @@ namespace sloshsph {
 // pressure). A constant density is reproduced exactly whatever the particle arrangement,
 // including at a free surface where the kernel is truncated; particle-scale noise is
 // averaged out. Writes the fluid densities to `out` (size >= n_fluid); reads p.density.
-inline void shepard_density(const Particles& p, const PairList& pairs, std::vector<double>& out) {
+template <int D>
+void shepard_density(const BasicParticles<D>& p, const BasicPairList<D>& pairs, std::vector<double>& out) {
   const double m = p.mass, w0 = pairs.self_w();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     double num = m * w0, den = m * w0 / p.density[i];
-    pairs.for_each(i, [&](const Pair& q) {
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       num += m * q.w;
       den += m * q.w / p.density[q.j];
     });
@@ -34,13 +35,14 @@ inline void shepard_density(const Particles& p, const PairList& pairs, std::vect
 //   u_w   = -sum_f V_f u_f W / sum_f V_f W     (eq. 30: no slip, the image of the fluid velocity)
 // V_f = m / rho_f. A wall particle with no fluid around it gets rho0 and zero velocity.
 // Writes p.density and p.velocity of the wall particles only.
-inline void shepard_wall_values(Particles& p, const PairList& pairs, double rho0) {
+template <int D>
+void shepard_wall_values(BasicParticles<D>& p, const BasicPairList<D>& pairs, double rho0) {
   const double m = p.mass;
 #pragma omp parallel for schedule(static)
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
     double mass_sum = 0.0, volume_sum = 0.0;
-    Vec2 u_sum;
-    pairs.for_each(w, [&](const Pair& q) {
+    Vec<D> u_sum;
+    pairs.for_each(w, [&](const BasicPair<D>& q) {
       const double VW = m / p.density[q.j] * q.w;
       mass_sum += m * q.w;
       volume_sum += VW;

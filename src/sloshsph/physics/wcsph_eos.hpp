@@ -46,6 +46,11 @@ inline SoundSpeedEstimate estimate_sound_speed(const CaseSpec& spec) {
     base_velocity = spec.excitation.amplitude * spec.excitation.omega;
     base_acceleration = spec.excitation.amplitude * spec.excitation.omega * spec.excitation.omega;
   }
+  if (spec.excitation_y && spec.excitation_y->type == ExcitationType::harmonic) {  // 3D: both added, an upper bound
+    const ExcitationSpec& y = *spec.excitation_y;
+    base_velocity += y.amplitude * y.omega;
+    base_acceleration += y.amplitude * y.omega * y.omega;
+  }
   e.bulk_velocity = std::sqrt(2.0 * g * fill_head(spec.fill)) + std::abs(base_velocity);
   e.length = spec.tank.length;
   e.force = std::abs(g) + std::abs(base_acceleration);

@@ -58,11 +58,6 @@ double particle_volume(double dp) {
   if constexpr (D == 2) return dp * dp;
   else return dp * dp * dp;
 }
-template <int D>
-double times_particle_volume(double x, double dp) {
-  if constexpr (D == 2) return x * dp * dp;
-  else return x * dp * dp * dp;
-}
 
 }  // namespace
 

@@ -2,7 +2,6 @@
 // The scheme a case chose (scheme.type), behind one interface for the driver. A variant, not
 // a class hierarchy: the driver dispatches once per step, never per particle.
 #include <optional>
-#include <type_traits>
 #include <variant>
 
 #include "sloshsph/schemes/isph.hpp"
@@ -10,9 +9,9 @@
 
 namespace sloshsph {
 
-// In 2D the ISPH or the WCSPH scheme; in 3D the ISPH scheme only, so far (issue 31).
+// The ISPH or the WCSPH scheme, in 2D and 3D (issue 31).
 template <int D>
-using SchemeVariant = std::conditional_t<D == 2, std::variant<IsphScheme, WcsphScheme>, std::variant<IsphScheme3>>;
+using SchemeVariant = std::variant<BasicIsphScheme<D>, BasicWcsphScheme<D>>;
 
 template <int D>
 class BasicAnyScheme {
@@ -39,8 +38,7 @@ class BasicAnyScheme {
   }
   // The largest stable step of an explicit scheme (WCSPH: the CFL condition), none for ISPH.
   std::optional<double> stable_dt(const BasicParticles<D>& p, const BasicFrameForce<D>& f) const {
-    if constexpr (D == 2)
-      if (const auto* w = std::get_if<WcsphScheme>(&scheme_)) return w->stable_dt(p, f);
+    if (const auto* w = std::get_if<BasicWcsphScheme<D>>(&scheme_)) return w->stable_dt(p, f);
     return std::nullopt;
   }
   // Checkpoints (run/simulation): the scheme's state between steps.
@@ -50,15 +48,11 @@ class BasicAnyScheme {
   void load_state(StateReader& r) {
     std::visit([&](auto& s) { s.load_state(r); }, scheme_);
   }
-  const WcsphScheme* wcsph() const {
-    if constexpr (D == 2) return std::get_if<WcsphScheme>(&scheme_);
-    else return nullptr;
-  }
+  const BasicWcsphScheme<D>* wcsph() const { return std::get_if<BasicWcsphScheme<D>>(&scheme_); }
 
  private:
   static SchemeVariant<D> make(const CaseSpec& spec, double h) {
-    if constexpr (D == 2)
-      if (spec.scheme.type == "wcsph") return SchemeVariant<D>(std::in_place_type<WcsphScheme>, spec, h);
+    if (spec.scheme.type == "wcsph") return SchemeVariant<D>(std::in_place_type<BasicWcsphScheme<D>>, spec, h);
     return SchemeVariant<D>(std::in_place_type<BasicIsphScheme<D>>, spec, h);
   }
   SchemeVariant<D> scheme_;

@@ -15,7 +15,8 @@
 
 namespace sloshsph {
 
-void WcsphData::resize_fluid(std::size_t n_fluid) {
+template <int D>
+void BasicWcsphData<D>::resize_fluid(std::size_t n_fluid) {
   id.resize(n_fluid);
   acceleration.resize(n_fluid);
   density_rate.resize(n_fluid);
@@ -29,7 +30,8 @@ void WcsphData::resize_fluid(std::size_t n_fluid) {
   wall_acceleration.resize(n_fluid);
 }
 
-void WcsphData::resize_all(std::size_t n) {
+template <int D>
+void BasicWcsphData<D>::resize_all(std::size_t n) {
   volume.resize(n);
   scratch.resize(n);
 }
@@ -45,7 +47,8 @@ void permute(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
 
 }  // namespace
 
-WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
+template <int D>
+BasicWcsphScheme<D>::BasicWcsphScheme(const CaseSpec& spec, double h)
     : spec_(spec.scheme.wcsph),
       kernel_type_(spec.particles.kernel),
       h_(h),
@@ -54,8 +57,8 @@ WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
       nu_(spec.fluid.viscosity),
       c0_(case_sound_speed(spec)),
       eta2_(0.01 * h * h),
-      rho_ref_(spec.fluid.density * spec.particles.dp * spec.particles.dp *
-               lattice_number_density(spec.particles.kernel, h, spec.particles.dp)),
+      rho_ref_(times_particle_volume<D>(spec.fluid.density, spec.particles.dp) *
+               lattice_number_density(spec.particles.kernel, h, spec.particles.dp, D)),
       ct_(spec.scheme.ct),
       tank_(spec.tank),
       tank_where_(spec.where("tank.shape")),
@@ -73,15 +76,16 @@ WcsphScheme::WcsphScheme(const CaseSpec& spec, double h)
   shifting_.h = h;
   shifting_.dp = dp_;
   shifting_.max_shift = spec.scheme.shifting_max * dp_;
-  shifting_.w_dp = with_kernel(kernel_type_, h, [&](const auto& k) { return k.w(dp_); });
+  shifting_.w_dp = with_kernel(kernel_type_, h, [&](const auto& k) { return k.w(dp_); }, D);
 }
 
-MemoryParts WcsphScheme::memory_parts() const {
-  const WcsphData& d = data_;
+template <int D>
+MemoryParts BasicWcsphScheme<D>::memory_parts() const {
+  const BasicWcsphData<D>& d = data_;
   const std::size_t n = d.id.capacity();
-  const std::size_t per_fluid = sizeof(std::int32_t) + 6 * sizeof(Vec2) + 2 * sizeof(double) + sizeof(Mat2) +
-                                sizeof(SymTensor2);
-  const std::size_t particle_arrays = n * per_fluid + d.position_at_build.capacity() * sizeof(Vec2) +
+  const std::size_t per_fluid = sizeof(std::int32_t) + 6 * sizeof(Vec<D>) + 2 * sizeof(double) + sizeof(Mat<D>) +
+                                sizeof(SymTensor<D>);
+  const std::size_t particle_arrays = n * per_fluid + d.position_at_build.capacity() * sizeof(Vec<D>) +
                                       (d.volume.capacity() + d.scratch.capacity()) * sizeof(double) +
                                       repulsive_.capacity() + d.surface.capacity();
   return {{"particle_arrays", particle_arrays},
@@ -96,12 +100,13 @@ MemoryParts WcsphScheme::memory_parts() const {
 
 // The stored rates belong to the particles named in data_.id. After the driver removed
 // leaked particles, they are remapped by id. Returns false if some particle has none.
-bool WcsphScheme::sync_state(const Particles& p) {
-  WcsphData& d = data_;
+template <int D>
+bool BasicWcsphScheme<D>::sync_state(const ParticleSet& p) {
+  BasicWcsphData<D>& d = data_;
   const std::size_t n = p.n_fluid;
   if (d.id.size() == n && std::equal(d.id.begin(), d.id.end(), p.id.begin())) return true;
   bool complete = !d.id.empty();
-  std::vector<Vec2> acc(n), xs(n);
+  std::vector<Vec<D>> acc(n), xs(n);
   std::vector<double> rate(n, 0.0);
   if (complete) {
     std::int32_t max_id = 0;
@@ -132,8 +137,9 @@ bool WcsphScheme::sync_state(const Particles& p) {
 // more than half the skin by the end of this step (its displacement since the build plus
 // dt (|u| + |u_xsph| + dt |a|), a the last rate plus the body force): every evaluation inside
 // the step then sees all pairs within 2h.
-void WcsphScheme::update_neighbours(Particles& p, double dt, const FrameForce& frame) {
-  WcsphData& d = data_;
+template <int D>
+void BasicWcsphScheme<D>::update_neighbours(ParticleSet& p, double dt, const Frame& frame) {
+  BasicWcsphData<D>& d = data_;
   diagnostics_.neighbours_rebuilt = false;
   bool rebuild = neighbours_.stale(p.position, p.n_fluid) || d.position_at_build.size() != p.n_fluid;
   if (!rebuild) {
@@ -142,7 +148,7 @@ void WcsphScheme::update_neighbours(Particles& p, double dt, const FrameForce& f
     bool far = false;
 #pragma omp parallel for reduction(|| : far) schedule(static)
     for (std::size_t i = 0; i < p.n_fluid; ++i) {
-      const Vec2 a = d.acceleration[i] + frame.at(p.position[i], p.velocity[i]);
+      const Vec<D> a = d.acceleration[i] + frame.at(p.position[i], p.velocity[i]);
       const double reach = norm(p.position[i] - d.position_at_build[i]) + dt * (norm(p.velocity[i]) + norm(d.xsph[i]) + dt * norm(a)) +
                            shift_reach;
       far = far || reach > limit;
@@ -165,15 +171,19 @@ void WcsphScheme::update_neighbours(Particles& p, double dt, const FrameForce& f
 // Shao's repulsive particles are the first layer of wall particles: sample_walls puts it
 // dp/2 outside the wall surface, at the lattice spacing dp from the first fluid row, so the
 // repulsive force (zero beyond dp, Shao eq. 27) vanishes for fluid at rest as it is placed.
-void WcsphScheme::mark_repulsive_layer(const Particles& p) {
+template <int D>
+void BasicWcsphScheme<D>::mark_repulsive_layer(const ParticleSet& p) {
   repulsive_.assign(p.n_wall(), 0);
-  if (spec_.walls != WallTreatment::repulsive) return;
-  const TankGeometry tank = make_tank(tank_, tank_where_);
-  for (std::size_t w = p.n_fluid; w < p.size(); ++w)
-    repulsive_[w - p.n_fluid] = tank.signed_distance(p.position[w]) > -dp_ ? 1 : 0;
+  if constexpr (D == 2) {  // 3D: refused by the case reader
+    if (spec_.walls != WallTreatment::repulsive) return;
+    const TankGeometry tank = make_tank(tank_, tank_where_);
+    for (std::size_t w = p.n_fluid; w < p.size(); ++w)
+      repulsive_[w - p.n_fluid] = tank.signed_distance(p.position[w]) > -dp_ ? 1 : 0;
+  }
 }
 
-void WcsphScheme::fluid_pressure(Particles& p) const {
+template <int D>
+void BasicWcsphScheme<D>::fluid_pressure(ParticleSet& p) const {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) p.pressure[i] = eos_pressure(p.density[i], rho0_, c0_);
 }
@@ -191,21 +201,26 @@ namespace {
 //    pressure, so k = 0 here.
 //  * SPS (as the ISPH scheme, thesis eqs. 2.8-2.9): nu_t = (Cs dp)^2 |S|, k = (nu_t / (Ct dp))^2,
 //    R = 2 nu_t S - 2/3 k I.
-VelocityGradient corrected_velocity_gradient(const Particles& p, const PairList& pairs,
-                                             const std::vector<double>& volume, const Mat2& correction,
-                                             std::size_t i) {
-  const Vec2 ui = p.velocity[i];
-  VelocityGradient grad;
-  pairs.for_each(i, [&](const Pair& q) {
+template <int D>
+BasicVelocityGradient<D> corrected_velocity_gradient(const BasicParticles<D>& p, const BasicPairList<D>& pairs,
+                                                     const std::vector<double>& volume, const Mat<D>& correction,
+                                                     std::size_t i) {
+  const Vec<D> ui = p.velocity[i];
+  BasicVelocityGradient<D> grad;
+  pairs.for_each(i, [&](const BasicPair<D>& q) {
     if (q.f == 0.0) return;
-    const Vec2 g = correction * (q.rij * q.f);
-    const Vec2 du = (p.velocity[q.j] - ui) * volume[q.j];
-    grad.c[0][0] += du.x * g.x;
-    grad.c[0][1] += du.x * g.y;
-    grad.c[1][0] += du.y * g.x;
-    grad.c[1][1] += du.y * g.y;
+    const Vec<D> g = correction * (q.rij * q.f);
+    const Vec<D> du = (p.velocity[q.j] - ui) * volume[q.j];
+    for (int k = 0; k < D; ++k)
+      for (int l = 0; l < D; ++l) grad.c[k][l] += component(du, k) * component(g, l);
   });
   return grad;
+}
+
+// R / rho of a turbulent stress, component by component.
+inline SymTensor2 divided(const SymTensor2& r, double rho) { return {r.xx / rho, r.xy / rho, r.yy / rho}; }
+inline SymTensor3 divided(const SymTensor3& r, double rho) {
+  return {r.xx / rho, r.xy / rho, r.xz / rho, r.yy / rho, r.yz / rho, r.zz / rho};
 }
 
 // The constants of the rate sweep.
@@ -251,32 +266,34 @@ struct RateTerms {
 //  * XSPH, Dincer eq. 11 (the minus sign lost in extraction restored): eps sum_{j fluid} m (u_j - u_i)
 //    W_ij / rho_ij, rho_ij = (rho_i + rho_j) / 2. Fluid neighbours only: the velocity is smoothed
 //    within the fluid; its pair terms cancel, so the mean drift is the mean velocity.
-void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const std::vector<std::uint8_t>& repulsive,
-           WcsphData& d) {
+template <int D>
+void rates(const BasicParticles<D>& p, const BasicPairList<D>& pairs, const RateTerms& t,
+           const std::vector<std::uint8_t>& repulsive, BasicWcsphData<D>& d) {
   const std::size_t nf = p.n_fluid;
   const double m = t.mass;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 ui = p.velocity[i];
+    const Vec<D> ui = p.velocity[i];
     const double rho_i = p.density[i], pi = p.pressure[i];
-    const Mat2 L = t.correct ? d.correction[i] : Mat2{};
-    const Vec2 gi = d.density_gradient[i];
-    const SymTensor2 Ri = t.turbulence ? d.stress[i] : SymTensor2{};
+    const Mat<D> L = t.correct ? d.correction[i] : Mat<D>{};
+    const Vec<D> gi = d.density_gradient[i];
+    const SymTensor<D> Ri = t.turbulence ? d.stress[i] : SymTensor<D>{};
     double drho = 0.0, diffusion = 0.0;
-    Vec2 a_fluid, a_wall, xs;
-    pairs.for_each(i, [&](const Pair& q) {
+    Vec<D> a_fluid, a_wall, xs;
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       const std::size_t j = q.j;
-      const Vec2 rij = q.rij;
+      const Vec<D> rij = q.rij;
       const double r2 = q.r2();
       const double F = q.f;
       const bool fluid_j = j < nf;
-      Vec2 a;
-      if (!fluid_j && t.repulsive && repulsive[j - nf]) a += repulsive_acceleration(rij, t.c0, t.h, t.dp);
+      Vec<D> a;
+      if constexpr (D == 2)
+        if (!fluid_j && t.repulsive && repulsive[j - nf]) a += repulsive_acceleration(rij, t.c0, t.h, t.dp);
       if (F != 0.0) {
-        const Vec2 grad = rij * F;
-        const Vec2 grad_c = t.correct ? L * grad : grad;
+        const Vec<D> grad = rij * F;
+        const Vec<D> grad_c = t.correct ? L * grad : grad;
         const double Vj = d.volume[j], rho_j = p.density[j];
-        const Vec2 uij = ui - p.velocity[j];
+        const Vec<D> uij = ui - p.velocity[j];
         drho += m * dot(uij, grad_c);
         if (fluid_j && t.delta > 0.0)
           diffusion += Vj * (-F) * (2.0 * (rho_j - rho_i) + dot(gi + d.density_gradient[j], rij));
@@ -291,10 +308,8 @@ void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const 
           a += uij * (t.nu * laplacian_weight(4.0 * m * t.rho0 / (rho_sum * rho_sum), F, r2, t.eta2));
         }
         if (t.turbulence) {
-          const SymTensor2& Rj = fluid_j ? d.stress[j] : Ri;  // a reference: see predict_velocity (isph.cpp)
-          const double sxx = Ri.xx / rho_i + Rj.xx / rho_j, sxy = Ri.xy / rho_i + Rj.xy / rho_j,
-                       syy = Ri.yy / rho_i + Rj.yy / rho_j;
-          a += Vec2{sxx * grad_c.x + sxy * grad_c.y, sxy * grad_c.x + syy * grad_c.y} * m;
+          const SymTensor<D>& Rj = fluid_j ? d.stress[j] : Ri;  // a reference: see predict_velocity (isph.cpp)
+          a += sum_times(divided(Ri, rho_i), divided(Rj, rho_j), grad_c) * m;
         }
         if (fluid_j && t.xsph > 0.0) xs += (p.velocity[j] - ui) * (2.0 * m * q.w / (rho_i + rho_j));
       }
@@ -310,8 +325,10 @@ void rates(const Particles& p, const PairList& pairs, const RateTerms& t, const 
 
 // The whole acceleration of fluid particle i at (r, u): the evaluated rates, the frame's body
 // force and the driver's extra (screen) acceleration, which is constant over the step.
-Vec2 total_acceleration(const WcsphData& d, const FrameForce& frame, std::size_t i, Vec2 r, Vec2 u) {
-  return d.acceleration[i] + frame.at(r, u) + (d.extra_acceleration.empty() ? Vec2{} : d.extra_acceleration[i]);
+template <int D>
+Vec<D> total_acceleration(const BasicWcsphData<D>& d, const BasicFrameForce<D>& frame, std::size_t i, Vec<D> r,
+                          Vec<D> u) {
+  return d.acceleration[i] + frame.at(r, u) + (d.extra_acceleration.empty() ? Vec<D>{} : d.extra_acceleration[i]);
 }
 
 }  // namespace
@@ -325,8 +342,9 @@ Vec2 total_acceleration(const WcsphData& d, const FrameForce& frame, std::size_t
 //    no wall-wall pairs, and the repulsive particles' values are themselves Shepard averages of
 //    the same fluid, so both layers here interpolate the fluid directly. The pressure is clipped
 //    at 0 as adami_wall_pressure does (above the free surface the mirrored medium is air).
-void WcsphScheme::wall_values(Particles& p, const FrameForce& frame) {
-  const PairList& pairs = data_.pairs;
+template <int D>
+void BasicWcsphScheme<D>::wall_values(ParticleSet& p, const Frame& frame) {
+  const BasicPairList<D>& pairs = data_.pairs;
   if (spec_.walls == WallTreatment::repulsive) {
     shepard_wall_values(p, pairs, rho0_);
 #pragma omp parallel for schedule(static)
@@ -342,13 +360,15 @@ void WcsphScheme::wall_values(Particles& p, const FrameForce& frame) {
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) p.density[w] = eos_density(p.pressure[w], rho0_, c0_);
 }
 
-void WcsphScheme::build_pairs(const Particles& p, std::size_t first_row) {
+template <int D>
+void BasicWcsphScheme<D>::build_pairs(const ParticleSet& p, std::size_t first_row) {
   data_.pairs.build(kernel_type_, h_, p.position, neighbours_, first_row);
 }
 
 // One evaluation of the rates at the state the particles hold (positions, velocities, densities).
-void WcsphScheme::evaluate(Particles& p, const FrameForce& frame) {
-  WcsphData& d = data_;
+template <int D>
+void BasicWcsphScheme<D>::evaluate(ParticleSet& p, const Frame& frame) {
+  BasicWcsphData<D>& d = data_;
   const std::size_t nf = p.n_fluid;
   d.resize_fluid(nf);
   d.resize_all(p.size());
@@ -375,7 +395,7 @@ void WcsphScheme::evaluate(Particles& p, const FrameForce& frame) {
     for (std::size_t i = 0; i < nf; ++i) {
       if (spec_.delta > 0.0)
         d.density_gradient[i] = renormalised_gradient(d.pairs, p.density, d.volume, i, fluid_only).gradient;
-      const Mat2 L = spec_.kernel_gradient_correction ? kernel_correction_matrix(d.pairs, d.volume, i, all) : Mat2{};
+      const Mat<D> L = spec_.kernel_gradient_correction ? kernel_correction_matrix(d.pairs, d.volume, i, all) : Mat<D>{};
       d.correction[i] = L;
       if (turbulence) {
         double nu_t = 0.0;
@@ -402,12 +422,13 @@ void WcsphScheme::evaluate(Particles& p, const FrameForce& frame) {
   t.repulsive = spec_.walls == WallTreatment::repulsive;
   rates(p, d.pairs, t, repulsive_, d);
 
-  Vec2 wall;  // fixed-order sum: independent of the thread count
+  Vec<D> wall;  // fixed-order sum: independent of the thread count
   for (std::size_t i = 0; i < nf; ++i) wall += d.wall_acceleration[i];
   last_wall_force_ = wall * p.mass;
 }
 
-void WcsphScheme::initialise(Particles& p, const FrameForce& frame) {
+template <int D>
+void BasicWcsphScheme<D>::initialise(ParticleSet& p, const Frame& frame) {
   sync_state(p);
   update_neighbours(p, 0.0, frame);
   mark_repulsive_layer(p);
@@ -432,18 +453,19 @@ void WcsphScheme::initialise(Particles& p, const FrameForce& frame) {
 //   r^{n+1} = r^{n+1/2} + dt/2 u^{n+1} + dt u_xsph^{n+1/2}
 // The wall force reported is that of the midpoint evaluation: the one that changed the
 // momentum over the step.
-void WcsphScheme::step_symplectic(Particles& p, const StepInput& in) {
-  WcsphData& d = data_;
+template <int D>
+void BasicWcsphScheme<D>::step_symplectic(ParticleSet& p, const Input& in) {
+  BasicWcsphData<D>& d = data_;
   const double dt = in.dt;
   const std::size_t nf = p.n_fluid;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 r = p.position[i], u = p.velocity[i];
+    const Vec<D> r = p.position[i], u = p.velocity[i];
     const double rho = p.density[i];
     d.position_start[i] = r;
     d.velocity_start[i] = u;
     d.density_start[i] = rho;
-    const Vec2 a = total_acceleration(d, in.frame, i, r, u);
+    const Vec<D> a = total_acceleration(d, in.frame, i, r, u);
     p.position[i] = r + 0.5 * dt * u;
     p.velocity[i] = u + 0.5 * dt * a;
     p.density[i] = rho + 0.5 * dt * d.density_rate[i];
@@ -451,8 +473,8 @@ void WcsphScheme::step_symplectic(Particles& p, const StepInput& in) {
   evaluate(p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
-    const Vec2 u = d.velocity_start[i] + dt * a;
+    const Vec<D> a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
+    const Vec<D> u = d.velocity_start[i] + dt * a;
     p.velocity[i] = u;
     p.density[i] = d.density_start[i] + dt * d.density_rate[i];
     p.position[i] += 0.5 * dt * u + dt * d.xsph[i];
@@ -467,15 +489,16 @@ void WcsphScheme::step_symplectic(Particles& p, const StepInput& in) {
 //   u^{n+1} = u^{n+1/2} + dt/2 a^{n+1},  rho^{n+1} = rho^{n+1/2} + dt/2 D^{n+1}
 // The momentum change over the step is dt (F^n + F^{n+1}) / 2, so the wall force reported is
 // the mean of the wall forces of the two evaluations.
-void WcsphScheme::step_leapfrog(Particles& p, const StepInput& in) {
-  WcsphData& d = data_;
+template <int D>
+void BasicWcsphScheme<D>::step_leapfrog(ParticleSet& p, const Input& in) {
+  BasicWcsphData<D>& d = data_;
   const double dt = in.dt;
   const std::size_t nf = p.n_fluid;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 r = p.position[i], u = p.velocity[i];
-    const Vec2 a = total_acceleration(d, in.frame, i, r, u);
-    const Vec2 u_half = u + 0.5 * dt * a;
+    const Vec<D> r = p.position[i], u = p.velocity[i];
+    const Vec<D> a = total_acceleration(d, in.frame, i, r, u);
+    const Vec<D> u_half = u + 0.5 * dt * a;
     const double rho_half = p.density[i] + 0.5 * dt * d.density_rate[i];
     d.velocity_start[i] = u_half;
     d.density_start[i] = rho_half;
@@ -483,11 +506,11 @@ void WcsphScheme::step_leapfrog(Particles& p, const StepInput& in) {
     p.velocity[i] = u_half + 0.5 * dt * a;
     p.density[i] = rho_half + 0.5 * dt * d.density_rate[i];
   }
-  const Vec2 wall_before = last_wall_force_;
+  const Vec<D> wall_before = last_wall_force_;
   evaluate(p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
+    const Vec<D> a = total_acceleration(d, in.frame, i, p.position[i], p.velocity[i]);
     p.velocity[i] = d.velocity_start[i] + 0.5 * dt * a;
     p.density[i] = d.density_start[i] + 0.5 * dt * d.density_rate[i];
   }
@@ -496,8 +519,9 @@ void WcsphScheme::step_leapfrog(Particles& p, const StepInput& in) {
 
 // Pressures of the new densities, the Shepard re-normalisation when due (Shao eqs. 10-11,
 // every shepard_interval steps), wall values at the new positions (for output), diagnostics.
-void WcsphScheme::finish_step(Particles& p, const StepInput& in) {
-  const FrameForce& frame = in.frame;
+template <int D>
+void BasicWcsphScheme<D>::finish_step(ParticleSet& p, const Input& in) {
+  const Frame& frame = in.frame;
   ++steps_;
   fluid_pressure(p);
   // The pairs at the new positions: the Shepard filter and the shift read the fluid's rows, the
@@ -528,7 +552,8 @@ void WcsphScheme::finish_step(Particles& p, const StepInput& in) {
   diagnostics_.solver_residual = 0.0;
 }
 
-void WcsphScheme::step(Particles& p, const StepInput& in) {
+template <int D>
+void BasicWcsphScheme<D>::step(ParticleSet& p, const Input& in) {
   const bool have_rates = sync_state(p);
   update_neighbours(p, in.dt, in.frame);
   data_.resize_fluid(p.n_fluid);
@@ -546,16 +571,17 @@ void WcsphScheme::step(Particles& p, const StepInput& in) {
 // eq. 2.20 with its spray fraction, at ISPH's default threshold 0.9), from the kernel sums m W
 // against rho_ref (Sun et al. detect it from the eigenvalues of the renormalisation matrix
 // instead; not done).
-std::size_t WcsphScheme::shift(Particles& p, double dt, double max_speed) {
+template <int D>
+std::size_t BasicWcsphScheme<D>::shift(ParticleSet& p, double dt, double max_speed) {
   constexpr double kSurfaceThreshold = 0.9;
-  WcsphData& d = data_;
-  const PairList& pairs = d.pairs;
+  BasicWcsphData<D>& d = data_;
+  const BasicPairList<D>& pairs = d.pairs;
   const double m = p.mass;
   d.surface.assign(p.n_fluid, kShiftInterior);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     double wsum = pairs.self_w(), wall_sum = 0.0;
-    pairs.for_each(i, [&](const Pair& q) {
+    pairs.for_each(i, [&](const BasicPair<D>& q) {
       wsum += q.w;
       if (!p.is_fluid(q.j)) wall_sum += q.w;
     });
@@ -566,13 +592,14 @@ std::size_t WcsphScheme::shift(Particles& p, double dt, double max_speed) {
                      d.shifting);
 }
 
-double WcsphScheme::stable_dt(const Particles& p, const FrameForce& frame) const {
-  const WcsphData& d = data_;
+template <int D>
+double BasicWcsphScheme<D>::stable_dt(const ParticleSet& p, const Frame& frame) const {
+  const BasicWcsphData<D>& d = data_;
   const bool have = d.acceleration.size() == p.n_fluid;
   double u_max = 0.0, a_max = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     u_max = std::max(u_max, norm(p.velocity[i]));
-    const Vec2 a = (have ? d.acceleration[i] : Vec2{}) + frame.at(p.position[i], p.velocity[i]);
+    const Vec<D> a = (have ? d.acceleration[i] : Vec<D>{}) + frame.at(p.position[i], p.velocity[i]);
     a_max = std::max(a_max, norm(a));
   }
   double dt = spec_.cfl * h_ / (c0_ + u_max);
@@ -582,7 +609,8 @@ double WcsphScheme::stable_dt(const Particles& p, const FrameForce& frame) const
   return dt;
 }
 
-void WcsphScheme::save_state(StateWriter& w) const {
+template <int D>
+void BasicWcsphScheme<D>::save_state(StateWriter& w) const {
   w.array("wcsph.id", data_.id);
   w.array("wcsph.acceleration", data_.acceleration);
   w.array("wcsph.density_rate", data_.density_rate);
@@ -594,16 +622,22 @@ void WcsphScheme::save_state(StateWriter& w) const {
   neighbours_.save(w);
 }
 
-void WcsphScheme::load_state(StateReader& r) {
+template <int D>
+void BasicWcsphScheme<D>::load_state(StateReader& r) {
   data_.id = r.array<std::int32_t>("wcsph.id");
-  data_.acceleration = r.array<Vec2>("wcsph.acceleration");
+  data_.acceleration = r.array<Vec<D>>("wcsph.acceleration");
   data_.density_rate = r.array<double>("wcsph.density_rate");
-  data_.xsph = r.array<Vec2>("wcsph.xsph");
-  data_.position_at_build = r.array<Vec2>("wcsph.position_at_build");
+  data_.xsph = r.array<Vec<D>>("wcsph.xsph");
+  data_.position_at_build = r.array<Vec<D>>("wcsph.position_at_build");
   max_eddy_viscosity_ = r.value<double>("wcsph.max_eddy_viscosity");
-  last_wall_force_ = r.value<Vec2>("wcsph.last_wall_force");
+  last_wall_force_ = r.value<Vec<D>>("wcsph.last_wall_force");
   steps_ = r.value<long>("wcsph.steps");
   neighbours_.load(r);
 }
+
+template struct BasicWcsphData<2>;
+template struct BasicWcsphData<3>;
+template class BasicWcsphScheme<2>;
+template class BasicWcsphScheme<3>;
 
 }  // namespace sloshsph

@@ -17,6 +17,10 @@
 // The driver calls initialise() once, then step() with dt <= stable_dt(). Each step makes one
 // evaluation of the rates (a gather sweep per stage, each particle writing only itself, so the
 // result does not depend on the number of threads).
+//
+// Written once for 2 and 3 dimensions (issue 31): BasicWcsphScheme<D>; WcsphScheme is the 2D one,
+// WcsphScheme3 the 3D one. Shao's repulsive wall particles are 2D only (the case reader refuses
+// them in 3D).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,54 +31,60 @@
 #include "sloshsph/core/vec2.hpp"
 #include "sloshsph/physics/kernel_correction.hpp"
 #include "sloshsph/physics/shifting.hpp"
-#include "sloshsph/schemes/isph.hpp"  // SymTensor2, lattice_number_density
+#include "sloshsph/schemes/isph.hpp"  // SymTensor, lattice_number_density, times_particle_volume
 #include "sloshsph/schemes/step.hpp"
 #include "sloshsph/sph/neighbours.hpp"
 #include "sloshsph/sph/pairs.hpp"
 
 namespace sloshsph {
 
-struct WcsphData {
+template <int D>
+struct BasicWcsphData {
   // Kept between steps, one per fluid particle, in particle order; `id` names the particle
   // each entry belongs to (the driver may remove leaked particles between steps).
   std::vector<std::int32_t> id;
-  std::vector<Vec2> acceleration;    // du/dt of the last evaluation without the body force, m/s^2
+  std::vector<Vec<D>> acceleration;    // du/dt of the last evaluation without the body force, m/s^2
   std::vector<double> density_rate;  // drho/dt of the last evaluation, kg/m^3/s
-  std::vector<Vec2> xsph;            // XSPH velocity correction of the last evaluation, m/s
-  std::vector<Vec2> position_at_build;  // fluid positions at the last neighbour-list build
+  std::vector<Vec<D>> xsph;            // XSPH velocity correction of the last evaluation, m/s
+  std::vector<Vec<D>> position_at_build;  // fluid positions at the last neighbour-list build
 
   // Scratch of one step.
-  std::vector<Vec2> extra_acceleration;  // driver-supplied (screens), constant over the step
-  std::vector<Vec2> position_start;  // r at the start of the step
-  std::vector<Vec2> velocity_start;  // u at the start of the step (leap-frog: at the half step)
+  std::vector<Vec<D>> extra_acceleration;  // driver-supplied (screens), constant over the step
+  std::vector<Vec<D>> position_start;  // r at the start of the step
+  std::vector<Vec<D>> velocity_start;  // u at the start of the step (leap-frog: at the half step)
   std::vector<double> density_start; // rho at the start of the step (leap-frog: at the half step)
   std::vector<double> volume;        // m / rho, every particle
-  std::vector<Vec2> density_gradient;  // renormalised grad rho (Dincer eqs. 8-9), fluid
-  std::vector<Mat2> correction;        // kernel gradient correction L_i (Shao eq. 17), fluid
-  std::vector<SymTensor2> stress;      // turbulent stress R / rho (Shao eq. 21), m^2/s^2, fluid
-  std::vector<Vec2> wall_acceleration; // part of du/dt due to wall particles (base shear), fluid
+  std::vector<Vec<D>> density_gradient;  // renormalised grad rho (Dincer eqs. 8-9), fluid
+  std::vector<Mat<D>> correction;      // kernel gradient correction L_i (Shao eq. 17), fluid
+  std::vector<SymTensor<D>> stress;    // turbulent stress R / rho (Shao eq. 21), m^2/s^2, fluid
+  std::vector<Vec<D>> wall_acceleration; // part of du/dt due to wall particles (base shear), fluid
   std::vector<double> scratch;         // Shepard densities
-  PairList pairs;  // within the kernel's support at the positions of the current evaluation
+  BasicPairList<D> pairs;  // within the kernel's support at the positions of the current evaluation
   // scheme.shifting = "delta_plus": the free-surface flags of the shift and its scratch.
   std::vector<std::uint8_t> surface;
-  ShiftingWork shifting;
+  BasicShiftingWork<D> shifting;
 
   void resize_fluid(std::size_t n_fluid);
   void resize_all(std::size_t n);
 };
 
-class WcsphScheme {
+template <int D>
+class BasicWcsphScheme {
  public:
-  WcsphScheme(const CaseSpec& spec, double h);
+  using ParticleSet = BasicParticles<D>;
+  using Input = BasicStepInput<D>;
+  using Frame = BasicFrameForce<D>;
+
+  BasicWcsphScheme(const CaseSpec& spec, double h);
 
   // Fluid densities from the pressures the particles carry (inverse equation of state: the
   // scene's hydrostatic pressure becomes a hydrostatic density), wall values, and one
   // evaluation of the rates for the first step.
-  void initialise(Particles& particles, const FrameForce& frame);
+  void initialise(ParticleSet& particles, const Frame& frame);
 
   // Advances the particles by input.dt (symplectic position Verlet or leap-frog, by
   // WcsphSpec::integrator). input.frame is the body force at the middle of the step.
-  void step(Particles& particles, const StepInput& input);
+  void step(ParticleSet& particles, const Input& input);
 
   // The largest stable step for the current state:
   //   dt = min( cfl h / (c0 + u_max),          acoustic CFL condition (covers the artificial viscosity)
@@ -84,14 +94,14 @@ class WcsphScheme {
   //                                             when the laminar viscosity is used (artificial_viscosity == 0)
   // with cfl = WcsphSpec::cfl. The artificial viscosity's diffusion limit, 0.125 h^2 / nu_av with
   // nu_av = alpha h c0 / 8, is h / (alpha c0): 1/alpha times h / c0, so it never binds.
-  double stable_dt(const Particles& particles, const FrameForce& frame) const;
+  double stable_dt(const ParticleSet& particles, const Frame& frame) const;
 
   double sound_speed() const { return c0_; }
   // Checkpoints: the state kept between steps (last rates, XSPH, counters, neighbour list).
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
-  const StepDiagnostics& diagnostics() const { return diagnostics_; }
-  const NeighbourList& neighbours() const { return neighbours_; }
+  const BasicStepDiagnostics<D>& diagnostics() const { return diagnostics_; }
+  const BasicNeighbourList<D>& neighbours() const { return neighbours_; }
   // Kernel sum of undisturbed fluid (as IsphScheme::reference_density), for surface detection by
   // the driver's gauges.
   double reference_density() const { return rho_ref_; }
@@ -99,17 +109,17 @@ class WcsphScheme {
   MemoryParts memory_parts() const;
 
  private:
-  void build_pairs(const Particles& p, std::size_t first_row = 0);
-  void step_symplectic(Particles& p, const StepInput& in);
-  void step_leapfrog(Particles& p, const StepInput& in);
-  void evaluate(Particles& p, const FrameForce& frame);
-  void wall_values(Particles& p, const FrameForce& frame);
-  void finish_step(Particles& p, const StepInput& in);
-  std::size_t shift(Particles& p, double dt, double max_speed);
-  void update_neighbours(Particles& p, double dt, const FrameForce& frame);
-  bool sync_state(const Particles& p);
-  void fluid_pressure(Particles& p) const;
-  void mark_repulsive_layer(const Particles& p);
+  void build_pairs(const ParticleSet& p, std::size_t first_row = 0);
+  void step_symplectic(ParticleSet& p, const Input& in);
+  void step_leapfrog(ParticleSet& p, const Input& in);
+  void evaluate(ParticleSet& p, const Frame& frame);
+  void wall_values(ParticleSet& p, const Frame& frame);
+  void finish_step(ParticleSet& p, const Input& in);
+  std::size_t shift(ParticleSet& p, double dt, double max_speed);
+  void update_neighbours(ParticleSet& p, double dt, const Frame& frame);
+  bool sync_state(const ParticleSet& p);
+  void fluid_pressure(ParticleSet& p) const;
+  void mark_repulsive_layer(const ParticleSet& p);
 
   WcsphSpec spec_;
   KernelType kernel_type_;
@@ -122,16 +132,24 @@ class WcsphScheme {
   double rho_ref_;
   double ct_;          // SPS constant C_t (SchemeSpec::ct)
   double max_eddy_viscosity_ = 0.0;
-  Vec2 last_wall_force_;     // leap-frog: wall force of the last evaluation
+  Vec<D> last_wall_force_;   // leap-frog: wall force of the last evaluation
   long steps_ = 0;
   TankSpec tank_;
   std::string tank_where_;
   std::vector<std::uint8_t> repulsive_;  // per wall particle (index w - n_fluid): first layer
-  NeighbourList neighbours_;
+  BasicNeighbourList<D> neighbours_;
   bool shifting_on_ = false;  // scheme.shifting = "delta_plus"
   ShiftingRule shifting_;
-  WcsphData data_;
-  StepDiagnostics diagnostics_;
+  BasicWcsphData<D> data_;
+  BasicStepDiagnostics<D> diagnostics_;
 };
+
+extern template struct BasicWcsphData<2>;
+extern template struct BasicWcsphData<3>;
+extern template class BasicWcsphScheme<2>;
+extern template class BasicWcsphScheme<3>;
+using WcsphData = BasicWcsphData<2>;
+using WcsphScheme = BasicWcsphScheme<2>;
+using WcsphScheme3 = BasicWcsphScheme<3>;
 
 }  // namespace sloshsph

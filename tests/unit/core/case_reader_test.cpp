@@ -496,7 +496,7 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(kMinimal, {"tank={shape=\"cylinder\", radius=0.2, height=0.4}"}, "tank.shape", "dimensions = 3");
   expect_error(box, {"tank={dimensions=3, shape=\"cylinder\", radius=0.2, height=0.4, breadth=0.4}"}, "tank.breadth",
                "radius and height");
-  expect_error(box, {"scheme.type=\"wcsph\""}, "scheme.type", "not available in 3D");
+  expect_error(box, {"scheme={type=\"wcsph\", walls=\"repulsive\"}"}, "scheme.walls", "not available in 3D");
   expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.type",
                "not available in 3D");
   std::string with_face = box;

@@ -62,6 +62,14 @@ TEST(Checkpoint, ThreeDimensionalCaseResumesBitwise) {
   expect_bitwise_resume<3>(spec);
 }
 
+// The WCSPH scheme in 3D resumes bitwise too (its rates, XSPH velocities and neighbour list).
+TEST(Checkpoint, ThreeDimensionalWcsphResumesBitwise) {
+  const CaseSpec spec = resolve_case(read_case_file(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/box3d_diagonal.toml",
+                                                    {"particles.dp=0.02", "time.settle=0.05", "time.dt=0.002",
+                                                     "output.snapshot_interval=0", "scheme.type=\"wcsph\""}));
+  expect_bitwise_resume<3>(spec);
+}
+
 // The same box on a 2-DOF structure (issue 31, section 3), the base motion its ground: both sway
 // modes, their force histories and the y interval sums are in the checkpoint.
 TEST(Checkpoint, TwoDofStructureResumesBitwise) {
