@@ -237,7 +237,11 @@ struct ExcitationSpec {
   ExcitationType type = ExcitationType::none;
   double amplitude = 0.0;            // m (harmonic)
   double angle = 0.0;                // rad (pitch; given in degrees in the case)
-  Vec2 pivot;                        // m, tank frame (pitch)
+  Vec2 pivot;                        // m, tank frame (pitch); in 3D (x, z)
+  double pivot_across = 0.0;         // m, 3D: the pivot's y (across the breadth)
+  // 3D (issue 31): the rotation's axis, a unit vector in tank axes; the angle is right-handed about
+  // it. The default (0, -1, 0) is the 2D pitch's sense: a positive angle raises the wall at x = length.
+  Vec3 axis{0.0, -1.0, 0.0};
   std::optional<double> frequency;   // Hz, as given
   std::optional<double> beta;        // ratio to the tank's first linear sloshing frequency
   BetaReference beta_reference = BetaReference::modal;

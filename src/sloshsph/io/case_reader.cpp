@@ -249,7 +249,7 @@ void read_pitch_file_keys(TableReader& r, ExcitationSpec& e) {
 
 // [excitation], and in it [excitation.y] (`along_y` non-null: the table's own keys; null: the y
 // table, whose keys are those of a translation without `direction`).
-ExcitationSpec read_excitation(TableReader& r, std::optional<ExcitationSpec>* along_y) {
+ExcitationSpec read_excitation(TableReader& r, std::optional<ExcitationSpec>* along_y, int dimensions) {
   ExcitationSpec e;
   if (!along_y) {
     if (r.has("direction"))
@@ -272,7 +272,18 @@ ExcitationSpec read_excitation(TableReader& r, std::optional<ExcitationSpec>* al
       e.angle = r.in_range("angle", 0.0, 0.0, 45.0) * 3.141592653589793238 / 180.0;
       read_frequency(r, e);
     }
-    e.pivot = r.point("pivot");
+    if (dimensions == 2) {
+      e.pivot = r.point("pivot");
+    } else {  // 3D: the pivot (x, y, z) and the axis (issue 31)
+      const std::optional<Vec3> pivot = r.optional_point3("pivot");
+      if (!pivot) r.fail("pivot", "is required: in 3D the point [x, y, z] the axis passes through (m)");
+      e.pivot = {pivot->x, pivot->z};
+      e.pivot_across = pivot->y;
+      if (const std::optional<Vec3> axis = r.optional_point3("axis")) {
+        if (!(norm(*axis) > 1e-12) || !std::isfinite(norm(*axis))) r.fail("axis", "expected a direction [x, y, z], not zero");
+        e.axis = normalized(*axis);
+      }
+    }
   } else if (type == "record") {
     e.type = ExcitationType::record;
     e.file = resolve_path(r, "file");
@@ -307,7 +318,7 @@ ExcitationSpec read_excitation(TableReader& r, std::optional<ExcitationSpec>* al
   }
   if (along_y) {
     if (auto y = r.table("y")) {
-      *along_y = read_excitation(*y, nullptr);
+      *along_y = read_excitation(*y, nullptr, dimensions);
       (*along_y)->direction = {0.0, 1.0};
       (*along_y)->table = "excitation.y";
     }
@@ -667,7 +678,8 @@ void check_dimensions(const CaseSpec& s) {
   if (s.scheme.type == "wcsph" && s.scheme.wcsph.walls == WallTreatment::repulsive)
     fail("scheme.walls", "Shao's repulsive wall particles" + not_yet);
   if (s.scheme.repulsive_walls) fail("scheme.repulsive_walls", "the repulsive wall force" + not_yet);
-  if (s.excitation.type == ExcitationType::pitch) fail("excitation.type", "a pitch (rotation)" + not_yet);
+  if (s.excitation.type == ExcitationType::pitch && (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0))
+    fail("excitation.direction", "is the direction of a translation; a rotation turns about 'axis'");
   if (!s.fill.blocks.empty()) fail("fill.blocks", "fill blocks" + not_yet);
   if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
   if (!s.screens.empty()) fail("screens", "a screen" + not_yet);
@@ -822,7 +834,8 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   section(r, "particles", true, [&](TableReader& t) { spec.particles = read_particles(t); });
   section(r, "scheme", false, [&](TableReader& t) { spec.scheme = read_scheme(t); });
   section(r, "time", true, [&](TableReader& t) { spec.time = read_time(t); });
-  section(r, "excitation", false, [&](TableReader& t) { spec.excitation = read_excitation(t, &spec.excitation_y); });
+  section(r, "excitation", false,
+          [&](TableReader& t) { spec.excitation = read_excitation(t, &spec.excitation_y, spec.tank.dimensions); });
   section(r, "probes", false, [&](TableReader& t) { read_probes(t, spec); });
   read_screens(r, spec);
   read_plates(r, spec);
@@ -1139,6 +1152,11 @@ std::string resolved_case_toml(const CaseSpec& s) {
   if (s.excitation.type != ExcitationType::none || s.excitation_y) {
     toml::table excitation = excitation_table(s.excitation);
     if (three_d) excitation.insert("direction", toml::array{s.excitation.direction.x, s.excitation.direction.y});
+    if (three_d && s.excitation.type == ExcitationType::pitch) {  // the 3D pivot (x, y, z) and axis
+      const ExcitationSpec& x = s.excitation;
+      excitation.insert_or_assign("pivot", toml::array{x.pivot.x, x.pivot_across, x.pivot.y});
+      excitation.insert("axis", toml::array{x.axis.x, x.axis.y, x.axis.z});
+    }
     if (s.excitation_y) excitation.insert("y", excitation_table(*s.excitation_y));
     root.insert("excitation", excitation);
   }

@@ -224,6 +224,17 @@ std::optional<Vec2> TableReader::optional_point(const std::string& key) {
   return p;
 }
 
+std::optional<Vec3> TableReader::optional_point3(const std::string& key) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 3 || !(*a)[0].is_number() || !(*a)[1].is_number() || !(*a)[2].is_number())
+    fail(key, "expected [x, y, z], three numbers, got " + show(*n));
+  const Vec3 p{to_double((*a)[0]), to_double((*a)[1]), to_double((*a)[2])};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) fail(key, "expected finite coordinates");
+  return p;
+}
+
 std::vector<Vec2> TableReader::points(const std::string& key) {
   const toml::node* n = node(key);
   if (!n) fail(key, "is required (a list of points [[x, y], ...])");

@@ -44,6 +44,7 @@ class TableReader {
   std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
   Vec2 point(const std::string& key);  // [x, y]
   std::optional<Vec2> optional_point(const std::string& key);
+  std::optional<Vec3> optional_point3(const std::string& key);  // [x, y, z] (3D cases)
   std::vector<Vec2> points(const std::string& key);  // [[x, y], ...]
 
   std::optional<TableReader> table(const std::string& key);

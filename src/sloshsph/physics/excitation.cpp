@@ -182,6 +182,8 @@ BaseMotion BaseMotionSource::at(double t) const {
   const ExcitationSpec& e = spec_;
   BaseMotion m;
   m.pivot = e.pivot;
+  m.axis = e.axis;
+  m.pivot_across = e.pivot_across;
   switch (e.type) {
     case ExcitationType::none:
       break;

@@ -21,6 +21,9 @@ struct BaseMotion {
   // 3D (issue 31): the horizontal motion along y (the tank's breadth); x above is then the motion
   // along x, y above the vertical one (in_tank_axes). Zero in 2D.
   double displacement_y = 0.0, velocity_y = 0.0, acceleration_y = 0.0;
+  // 3D: the rotation's axis (excitation.axis) and the pivot's y; the pivot above is (x, z).
+  Vec3 axis{0.0, -1.0, 0.0};
+  double pivot_across = 0.0;
 };
 
 // The base motion of an excitation at any time, with exactly consistent displacement,
@@ -83,11 +86,29 @@ inline BaseMotion in_tank_axes(BaseMotion m, Vec2 direction) {
 inline Vec3 displacement3(const BaseMotion& m) { return {m.displacement.x, m.displacement_y, m.displacement.y}; }
 inline Vec3 acceleration3(const BaseMotion& m) { return {m.acceleration.x, m.acceleration_y, m.acceleration.y}; }
 
-// The body force of a translating 3D tank (its motion in tank axes): gravity (-z) less the base
-// acceleration. No rotation in 3D yet (the case reader refuses a pitch).
+// v turned by -theta about the unit axis n (Rodrigues' formula): the inertial vector v in the axes
+// of a tank turned by theta about n.
+inline Vec3 turned_back(Vec3 v, Vec3 n, double theta) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  return c * v - s * cross(n, v) + ((1.0 - c) * dot(n, v)) * n;
+}
+
+// The body force of a 3D tank (its motion in tank axes): gravity (-z) less the base acceleration,
+// turned into the tank's axes when it is turned by theta about m.axis through the pivot (x,
+// pivot_across, z), with the rotation's terms omega = theta' n and alpha = theta'' n (the axis is
+// fixed, so n is the same in both frames). With n = (0, -1, 0) this is the 2D frame_force of the
+// section (x, z): the same uniform force and a 2D omega of theta'.
 inline FrameForce3 frame_force3(double gravity, const BaseMotion& m) {
   FrameForce3 f;
-  f.uniform = Vec3{0.0, 0.0, -gravity} - acceleration3(m);
+  const Vec3 inertial = Vec3{0.0, 0.0, -gravity} - acceleration3(m);
+  if (m.angle == 0.0 && m.angular_velocity == 0.0 && m.angular_acceleration == 0.0) {
+    f.uniform = inertial;  // a translation: the 3D code before rotations, the same bits
+    return f;
+  }
+  f.uniform = turned_back(inertial, m.axis, m.angle);
+  f.omega = m.angular_velocity * m.axis;
+  f.alpha = m.angular_acceleration * m.axis;
+  f.pivot = {m.pivot.x, m.pivot_across, m.pivot.y};
   return f;
 }
 

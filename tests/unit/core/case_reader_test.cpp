@@ -342,6 +342,26 @@ TEST(CaseReader, ThreeDimensionalKeys) {
   EXPECT_EQ(again.pressure_probes.at(1).position.y, 0.1);
 }
 
+// Issue 31, section 3: a rotation of a 3D tank, roll, pitch or yaw: `pivot` [x, y, z] and `axis`
+// (normalised; default (0, -1, 0), the 2D pitch's sense). Exact values; the resolved case reads back.
+TEST(CaseReader, ThreeDimensionalRotationKeys) {
+  const CaseSpec s = read_case_text(box3d_text(), "case.toml",
+                                    {"excitation={type=\"pitch\", angle=3.0, frequency=1.0, pivot=[0.2, 0.1, 0.15], "
+                                     "axis=[0.0, 0.0, 2.0]}"});
+  EXPECT_EQ(s.excitation.type, ExcitationType::pitch);
+  EXPECT_EQ(s.excitation.pivot.x, 0.2);
+  EXPECT_EQ(s.excitation.pivot.y, 0.15);  // the pivot's height, z
+  EXPECT_EQ(s.excitation.pivot_across, 0.1);
+  EXPECT_EQ(s.excitation.axis.z, 1.0);  // a yaw, normalised
+  const CaseSpec again = read_case_text(resolved_case_toml(s), "resolved.toml", {});
+  EXPECT_EQ(again.excitation.pivot_across, 0.1);
+  EXPECT_EQ(again.excitation.pivot.y, 0.15);
+  EXPECT_EQ(again.excitation.axis.z, 1.0);
+  const CaseSpec pitch = read_case_text(
+      box3d_text(), "case.toml", {"excitation={type=\"pitch\", angle=3.0, frequency=1.0, pivot=[0.2, 0.1, 0.15]}"});
+  EXPECT_EQ(pitch.excitation.axis.y, -1.0);  // the default: the 2D pitch's sense
+}
+
 // An upright cylinder: radius and height; it spans 2R in x and y (exact: no arithmetic but 2R), and
 // its resolved case reads back.
 TEST(CaseReader, CylinderKeys) {
@@ -497,8 +517,13 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(box, {"tank={dimensions=3, shape=\"cylinder\", radius=0.2, height=0.4, breadth=0.4}"}, "tank.breadth",
                "radius and height");
   expect_error(box, {"scheme={type=\"wcsph\", walls=\"repulsive\"}"}, "scheme.walls", "not available in 3D");
-  expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.type",
-               "not available in 3D");
+  // A rotation in 3D: the pivot is [x, y, z], the axis not zero, and no translation's direction.
+  expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.pivot",
+               "[x, y, z]");
+  expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1, 0.1], axis=[0.0, 0.0, 0.0]}"},
+               "excitation.axis", "not zero");
+  expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1, 0.1], direction=[0.0, 1.0]}"},
+               "excitation.direction", "axis");
   std::string with_face = box;
   with_face.replace(with_face.find("z = 0.005\n"), 10, "z = 0.005\nto = [0.2, 0.05]\n");
   expect_error(with_face, {}, "probes.pressure.0.to", "not available in 3D");

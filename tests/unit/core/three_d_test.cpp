@@ -9,9 +9,11 @@
 #include <numbers>
 #include <random>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "sloshsph/core/particles.hpp"
+#include "sloshsph/physics/excitation.hpp"
 #include "sloshsph/physics/frame.hpp"
 #include "sloshsph/physics/turbulence.hpp"
 #include "sloshsph/sph/kernel.hpp"
@@ -271,6 +273,38 @@ TEST(ThreeD, FrameForceAboutTheVerticalIsThePlaneOne) {
   const Vec3 c = roll.at({0.0, 0.0, 0.5}, {});
   EXPECT_NEAR(c.z, 4.0 * 0.5, 1e-12);
   EXPECT_NEAR(c.y, 0.0, 1e-12);
+}
+
+// Issue 31, section 3: a 3D tank turned about the axis (0, -1, 0) is the 2D pitch of its section
+// (x, z): the body force of a BaseMotion with angle, rate and acceleration, through frame_force
+// (2D) and frame_force3 (3D), at points and velocities in the section's plane, gives the same x and
+// z components and no y, to round-off (1e-12 of g). And a roll (axis x) of a tank at rest turns
+// gravity towards -y for a positive angle (the right-handed sense about +x takes z towards -y).
+TEST(ThreeD, PitchAboutMinusYIsTheSectionsPitch) {
+  BaseMotion m;
+  m.angle = 0.07;
+  m.angular_velocity = -0.4;
+  m.angular_acceleration = 1.9;
+  m.acceleration = {0.3, -0.2};
+  m.pivot = {0.45, 0.3};
+  m.pivot_across = 0.1;
+  m.axis = {0.0, -1.0, 0.0};
+  const FrameForce f2 = frame_force(9.81, m);
+  const FrameForce3 f3 = frame_force3(9.81, m);
+  for (const auto& [r, u] : {std::pair<Vec2, Vec2>{{0.9, 0.05}, {0.4, -1.1}}, {{0.1, 0.6}, {-0.2, 0.3}}}) {
+    const Vec2 a2 = f2.at(r, u);
+    const Vec3 a3 = f3.at({r.x, 0.37, r.y}, {u.x, 0.0, u.y});
+    EXPECT_NEAR(a3.x, a2.x, 1e-12 * 9.81);
+    EXPECT_NEAR(a3.z, a2.y, 1e-12 * 9.81);
+    EXPECT_NEAR(a3.y, 0.0, 1e-12 * 9.81);
+  }
+  BaseMotion roll;
+  roll.angle = 0.1;
+  roll.axis = {1.0, 0.0, 0.0};
+  const FrameForce3 r3 = frame_force3(9.81, roll);
+  EXPECT_NEAR(r3.uniform.y, -9.81 * std::sin(0.1), 1e-12);
+  EXPECT_NEAR(r3.uniform.z, -9.81 * std::cos(0.1), 1e-12);
+  EXPECT_EQ(r3.uniform.x, 0.0);
 }
 
 TEST(ThreeD, SpsClosureOfAPlaneFlowIsThePlaneOne) {
