@@ -220,6 +220,19 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
 
 }  // namespace
 
+// Screen k of the case: a full-height screen runs from the bottom to the top of the walls at its x.
+static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank, std::size_t k) {
+  ScreenSpec sc = spec.screens[k];
+  if (sc.full_height) {
+    const std::string key = "screens." + std::to_string(k);
+    if (sc.from.x <= tank.x_min || sc.from.x >= tank.x_max)
+      throw InputError(spec.where(key + ".x"), key + ".x", "the screen is outside the tank");
+    sc.from = {sc.from.x, tank.bottom_at(sc.from.x)};
+    sc.to = {sc.from.x, tank.y_top};
+  }
+  return sc;
+}
+
 Scene3 build_scene3(const CaseSpec& spec) {
   if (spec.tank.shape == "cylinder") return build_cylinder_scene(spec);
   auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));
@@ -230,6 +243,8 @@ Scene3 build_scene3(const CaseSpec& spec) {
                                fill_fluid(prism, dp, spec.fill.depth), sample_walls(prism, dp, spec.particles.wall_layers));
   add_fill_warning(spec, *tank, fill_fluid(*tank, dp, spec.fill.depth).size(), scene.warnings);
   add_breadth_warning(spec, scene.warnings);
+  // Screens (ergun, morison): the section's element extruded over the breadth (physics/porous.hpp).
+  for (std::size_t k = 0; k < spec.screens.size(); ++k) scene.screens.push_back(resolved_screen(spec, *tank, k));
   return scene;
 }
 
@@ -252,17 +267,10 @@ Scene build_scene(const CaseSpec& spec) {
   if (blocks.empty()) add_fill_warning(spec, *tank, fluid.size(), scene.warnings);
   std::vector<WallSample> walls = sample_walls(*tank, scene.dp, spec.particles.wall_layers);
   const std::size_t tank_walls = walls.size();
-  // Screens: a full-height screen runs from the bottom to the top of the walls at its x;
-  // explicit slat screens are rigid wall particles (thesis 4.3.2's explicit model).
+  // Screens: explicit slat screens are rigid wall particles (thesis 4.3.2's explicit model).
   for (std::size_t k = 0; k < spec.screens.size(); ++k) {
-    ScreenSpec sc = spec.screens[k];
+    const ScreenSpec sc = resolved_screen(spec, *tank, k);
     const std::string key = "screens." + std::to_string(k);
-    if (sc.full_height) {
-      if (sc.from.x <= tank->x_min || sc.from.x >= tank->x_max)
-        throw InputError(spec.where(key + ".x"), key + ".x", "the screen is outside the tank");
-      sc.from = {sc.from.x, tank->bottom_at(sc.from.x)};
-      sc.to = {sc.from.x, tank->y_top};
-    }
     if (sc.model == ScreenModel::explicit_slats) {
       SlatLayout layout = explicit_slat_layout(sc, scene.dp, *tank, spec.where(key + ".model"), key);
       walls.insert(walls.end(), layout.walls.begin(), layout.walls.end());

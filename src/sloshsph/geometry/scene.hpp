@@ -24,8 +24,9 @@ struct BasicPressureSensor {
 using PressureSensor = BasicPressureSensor<2>;
 
 // The particles and geometry of a case, in 2 or 3 dimensions. In 3D the tank is `tank` (the
-// section, in the x-z plane) extruded over `breadth` (geometry/prism_tank.hpp); screens and
-// plates exist in 2D only (the case reader refuses them in 3D).
+// section, in the x-z plane) extruded over `breadth` (geometry/prism_tank.hpp), and so are the
+// porous screens (ergun, morison; physics/porous.hpp); explicit slats and plates exist in 2D only
+// (the case reader refuses them in 3D).
 template <int D>
 struct BasicScene {
   // The section; shared: ContainerDistance points into it. For a cylinder, the rectangle 2R x

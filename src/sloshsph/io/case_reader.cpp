@@ -673,8 +673,8 @@ void check_dimensions(const CaseSpec& s) {
     fail("structure.tank_width", "is the width of a 2D section; a 3D tank's forces are the whole tank's (its breadth "
                                  "is tank.breadth): remove it");
   const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH and WCSPH "
-                              "schemes with Adami walls, translations along x and y, a 2-DOF structure, gauges and "
-                              "point pressure probes";
+                              "schemes with Adami walls, translations along x and y, rotations, a 2-DOF structure, "
+                              "porous screens across the breadth, gauges and point pressure probes";
   if (s.scheme.type == "wcsph" && s.scheme.wcsph.walls == WallTreatment::repulsive)
     fail("scheme.walls", "Shao's repulsive wall particles" + not_yet);
   if (s.scheme.repulsive_walls) fail("scheme.repulsive_walls", "the repulsive wall force" + not_yet);
@@ -682,7 +682,13 @@ void check_dimensions(const CaseSpec& s) {
     fail("excitation.direction", "is the direction of a translation; a rotation turns about 'axis'");
   if (!s.fill.blocks.empty()) fail("fill.blocks", "fill blocks" + not_yet);
   if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
-  if (!s.screens.empty()) fail("screens", "a screen" + not_yet);
+  for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
+    const std::string key = "screens." + std::to_string(k);
+    if (s.screens[k].model == ScreenModel::explicit_slats) fail(key + ".model", "explicit slats" + not_yet);
+    if (s.tank.shape == "cylinder")
+      fail(key, "a screen in a cylinder" + not_yet + " (a screen is the section's element extruded over the breadth "
+                "of a box or prism)");
+  }
   if (!s.plates.empty()) fail("plates", "an elastic plate" + not_yet);
   if (s.tank.breadth < 4.0 * s.particles.dp)
     fail("particles.dp", "too coarse: the tank is fewer than 4 particles across its breadth (tank.breadth = " +

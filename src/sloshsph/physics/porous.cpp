@@ -20,21 +20,10 @@ double kozeny_carman_permeability(double porosity, double diameter) {
   return n * n * n * diameter * diameter / (150.0 * (1.0 - n) * (1.0 - n));
 }
 
-namespace {
-
 // The inertial (Forchheimer) coefficient of thesis eq. 2.21 per rho |u| u, 1/m:
 // 1.75 / (sqrt(150) sqrt(K) n^1.5).
 double ergun_inertial_factor(double permeability, double porosity) {
   return 1.75 / (std::sqrt(150.0) * std::sqrt(permeability) * std::pow(porosity, 1.5));
-}
-
-}  // namespace
-
-Vec2 ergun_pressure_gradient(double mu, double rho, double permeability, double porosity, Vec2 velocity) {
-  // Thesis eq. 2.21: viscous (Darcy) term + inertial (Forchheimer) term.
-  const double viscous = mu / permeability;
-  const double inertial = rho * ergun_inertial_factor(permeability, porosity);
-  return (viscous + inertial * norm(velocity)) * velocity;
 }
 
 double ergun_inertial_loss_coefficient(double permeability, double porosity, double thickness) {
@@ -58,13 +47,6 @@ Vec2 morison_pressure_drop(double rho, double loss_coefficient, Vec2 velocity) {
 // ---------------------------------------------------------------------------------------
 // Screen particles.
 
-double ScreenParticles::max_support() const {
-  double s = 0.0;
-  for (const ScreenElement& e : elements)
-    if (e.count > 0) s = std::max(s, 2.0 * e.smoothing_length);
-  return s;
-}
-
 namespace {
 
 // sum_f V W_jf over an unbounded fluid lattice of spacing dp, at a lattice node: the value of
@@ -76,6 +58,17 @@ double lattice_weight(double h_sc, double dp) {
   for (int a = -n; a <= n; ++a)
     for (int b = -n; b <= n; ++b) sum += k.w(dp * std::sqrt(double(a * a + b * b)));
   return sum * dp * dp;
+}
+
+// The same over the cubic lattice with the 3D kernel.
+double lattice_weight3(double h_sc, double dp) {
+  const WendlandC2 k(h_sc, 3);
+  const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+  double sum = 0.0;
+  for (int a = -n; a <= n; ++a)
+    for (int b = -n; b <= n; ++b)
+      for (int c = -n; c <= n; ++c) sum += k.w(dp * std::sqrt(double(a * a + b * b + c * c)));
+  return sum * dp * dp * dp;
 }
 
 void check_non_negative(double v, const std::string& where, const std::string& key) {
@@ -144,29 +137,66 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
   return out;
 }
 
+BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp) {
+  BasicScreenParticles<3> out;
+  out.wet_fraction = section.wet_fraction;
+  for (std::size_t index = 0; index < section.elements.size(); ++index) {
+    ScreenElement e = section.elements[index];
+    const std::size_t first = e.first, count = e.count;
+    e.first = out.position.size();
+    if (count > 0) {
+      e.count_across = std::max<std::size_t>(
+          1, static_cast<std::size_t>(std::ceil(breadth / e.nominal_spacing - 1e-9)));
+      e.spacing_across = breadth / static_cast<double>(e.count_across);
+      e.undisturbed_weight = lattice_weight3(e.smoothing_length, dp);
+      for (std::size_t k = first; k < first + count; ++k)
+        for (std::size_t m = 0; m < e.count_across; ++m) {
+          const Vec2 q = section.position[k];
+          out.position.push_back({q.x, (static_cast<double>(m) + 0.5) * e.spacing_across, q.y});
+          out.element.push_back(static_cast<std::uint32_t>(index));
+        }
+      e.count = count * e.count_across;
+    }
+    out.elements.push_back(e);
+  }
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------
 // The drag stage.
 
 namespace {
 
-Vec2 particle_drag(const ScreenElement& e, Vec2 u, double rho, double mu) {
+// The element's unit normal in D dimensions (3D: the section's, the extrusion adds no y part).
+template <int D>
+Vec<D> element_normal(const ScreenElement& e) {
+  if constexpr (D == 2) return e.normal;
+  else return {e.normal.x, 0.0, e.normal.y};
+}
+
+template <int D>
+Vec<D> particle_drag(const ScreenElement& e, Vec<D> u, double rho, double mu) {
+  // A_p: the spacing per unit width in 2D, the spacing times the spacing across in 3D.
+  const double area = D == 2 ? e.spacing : e.spacing * e.spacing_across;
   if (e.model == ScreenModel::ergun)  // eq. 2.25: (dP/L)(U) * t_sc * A_p
-    return ergun_pressure_gradient(mu, rho, e.permeability, e.porosity, u) * (e.thickness * e.spacing);
+    return ergun_pressure_gradient(mu, rho, e.permeability, e.porosity, u) * (e.thickness * area);
   // Morison: only the component through the screen; |u_n| u_n n does not depend on the sign of n.
-  const double un = dot(u, e.normal);
-  return (0.5 * rho * e.loss_coefficient * std::abs(un) * un * e.spacing) * e.normal;
+  const Vec<D> normal = element_normal<D>(e);
+  const double un = dot(u, normal);
+  return (0.5 * rho * e.loss_coefficient * std::abs(un) * un * area) * normal;
 }
 
 }  // namespace
 
-void screen_drag(const ScreenParticles& screens, const Particles& p, const std::vector<Vec2>& velocity, double rho,
-                 double mu, ScreenDragWork& work, std::vector<Vec2>& acceleration_out,
-                 std::vector<ScreenElementLoad>& loads_out) {
+template <int D>
+void screen_drag(const BasicScreenParticles<D>& screens, const BasicParticles<D>& p,
+                 const std::vector<Vec<D>>& velocity, double rho, double mu, BasicScreenDragWork<D>& work,
+                 std::vector<Vec<D>>& acceleration_out, std::vector<BasicScreenElementLoad<D>>& loads_out) {
   const std::size_t ns = screens.size(), nf = p.n_fluid, n = p.size();
-  acceleration_out.assign(nf, Vec2{});
-  loads_out.assign(screens.elements.size(), ScreenElementLoad{});
-  work.velocity.assign(ns, Vec2{});
-  work.drag.assign(ns, Vec2{});
+  acceleration_out.assign(nf, Vec<D>{});
+  loads_out.assign(screens.elements.size(), BasicScreenElementLoad<D>{});
+  work.velocity.assign(ns, Vec<D>{});
+  work.drag.assign(ns, Vec<D>{});
   work.fluid_weight.assign(ns, 0.0);
   work.wet_weight.assign(ns, 0.0);
   work.wet.assign(ns, 0);
@@ -180,10 +210,10 @@ void screen_drag(const ScreenParticles& screens, const Particles& p, const std::
 #pragma omp parallel for schedule(static)
   for (std::size_t j = 0; j < ns; ++j) {
     const ScreenElement& e = screens.elements[screens.element[j]];
-    const WendlandC2 k(e.smoothing_length);
+    const WendlandC2 k(e.smoothing_length, D);
     const double support2 = k.support() * k.support();
-    const Vec2 rj = screens.position[j];
-    Vec2 u;
+    const Vec<D> rj = screens.position[j];
+    Vec<D> u;
     double s = 0.0, fluid = 0.0, wall = 0.0;
     work.particle_grid.for_each_candidate(rj, k.support(), [&](std::uint32_t f) {
       const double r2 = norm2(rj - p.position[f]);
@@ -204,27 +234,34 @@ void screen_drag(const ScreenParticles& screens, const Particles& p, const std::
     work.fluid_weight[j] = s;
     work.wet_weight[j] = fluid;
     work.wet[j] = wet ? 1 : 0;
-    work.drag[j] = wet ? particle_drag(e, u, rho, mu) : Vec2{};
+    work.drag[j] = wet ? particle_drag<D>(e, u, rho, mu) : Vec<D>{};
   }
 
   // (b) Per fluid particle in the interface zone: its share of each screen particle's drag.
   work.screen_grid.build(screens.position, 0, ns, radius);
-  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-  Vec2 hi{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
-  for (const Vec2& q : screens.position) {
-    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
-    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+  Vec<D> lo, hi;  // the screen particles' bounding box
+  for (int c = 0; c < D; ++c) {
+    component_ref(lo, c) = std::numeric_limits<double>::max();
+    component_ref(hi, c) = std::numeric_limits<double>::lowest();
   }
+  for (const Vec<D>& q : screens.position)
+    for (int c = 0; c < D; ++c) {
+      component_ref(lo, c) = std::min(component(lo, c), component(q, c));
+      component_ref(hi, c) = std::max(component(hi, c), component(q, c));
+    }
   const double inv_m = 1.0 / p.mass;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
-    const Vec2 ri = p.position[i];
-    if (ri.x < lo.x - radius || ri.x > hi.x + radius || ri.y < lo.y - radius || ri.y > hi.y + radius) continue;
-    Vec2 f;
+    const Vec<D> ri = p.position[i];
+    bool outside = false;
+    for (int c = 0; c < D; ++c)
+      outside = outside || component(ri, c) < component(lo, c) - radius || component(ri, c) > component(hi, c) + radius;
+    if (outside) continue;
+    Vec<D> f;
     work.screen_grid.for_each_candidate(ri, radius, [&](std::uint32_t j) {
       if (!work.wet[j] || work.fluid_weight[j] <= 0.0) return;
       const ScreenElement& e = screens.elements[screens.element[j]];
-      const WendlandC2 k(e.smoothing_length);
+      const WendlandC2 k(e.smoothing_length, D);
       // Same expression as in (a), so that exactly the pairs of S_j share F_d,j.
       const double r2 = norm2(screens.position[j] - ri);
       if (r2 >= k.support() * k.support()) return;
@@ -235,7 +272,7 @@ void screen_drag(const ScreenParticles& screens, const Particles& p, const std::
 
   // Per element, in particle order (deterministic).
   for (std::size_t j = 0; j < ns; ++j) {
-    ScreenElementLoad& l = loads_out[screens.element[j]];
+    BasicScreenElementLoad<D>& l = loads_out[screens.element[j]];
     l.force_on_fluid -= work.drag[j];
     if (work.wet[j]) {
       l.mean_velocity += work.velocity[j];
@@ -243,11 +280,19 @@ void screen_drag(const ScreenParticles& screens, const Particles& p, const std::
     }
   }
   for (std::size_t e = 0; e < loads_out.size(); ++e) {
-    ScreenElementLoad& l = loads_out[e];
+    BasicScreenElementLoad<D>& l = loads_out[e];
     if (l.wet_particles > 0) l.mean_velocity = l.mean_velocity / static_cast<double>(l.wet_particles);
     l.wet_length = static_cast<double>(l.wet_particles) * screens.elements[e].spacing;
+    if constexpr (D == 3) l.wet_length /= static_cast<double>(screens.elements[e].count_across);
   }
 }
+
+template void screen_drag<2>(const BasicScreenParticles<2>&, const BasicParticles<2>&, const std::vector<Vec2>&,
+                             double, double, BasicScreenDragWork<2>&, std::vector<Vec2>&,
+                             std::vector<BasicScreenElementLoad<2>>&);
+template void screen_drag<3>(const BasicScreenParticles<3>&, const BasicParticles<3>&, const std::vector<Vec3>&,
+                             double, double, BasicScreenDragWork<3>&, std::vector<Vec3>&,
+                             std::vector<BasicScreenElementLoad<3>>&);
 
 void screen_drag(const ScreenParticles& screens, const Particles& p, double rho, double mu,
                  std::vector<Vec2>& acceleration_out, std::vector<Vec2>& force_per_element_out) {

@@ -39,7 +39,15 @@ double kozeny_carman_permeability(double porosity, double diameter);
 // unit length along the flow, Pa/m, for the superficial velocity u:
 //   dP/L = mu / K u + 1.75 / sqrt(150) rho / (sqrt(K) n^1.5) |u| u.
 // Directed along u (the fluid loses pressure in the direction it flows).
-Vec2 ergun_pressure_gradient(double mu, double rho, double permeability, double porosity, Vec2 velocity);
+// (3D: the same with a 3D velocity.)
+double ergun_inertial_factor(double permeability, double porosity);
+template <int D>
+Vec<D> ergun_pressure_gradient(double mu, double rho, double permeability, double porosity, Vec<D> velocity) {
+  // Thesis eq. 2.21: viscous (Darcy) term + inertial (Forchheimer) term.
+  const double viscous = mu / permeability;
+  const double inertial = rho * ergun_inertial_factor(permeability, porosity);
+  return (viscous + inertial * norm(velocity)) * velocity;
+}
 
 // The loss coefficient of an Ergun element of thickness t at high Reynolds number: the inertial
 // term of eq. 2.24 written as 1/2 rho C_E |u| u,
@@ -73,20 +81,25 @@ struct ScreenElement {
   double length = 0.0;       // m, clipped length
   double nominal_spacing = 0.0;  // m, dp_sc as asked (D_c of the permeability, thesis 2.5.2)
   double spacing = 0.0;      // m, actual spacing = length / count <= dp_sc (A_p per unit width)
+  double spacing_across = 0.0;    // m, 3D: the spacing across the breadth (A_p = spacing x spacing_across)
+  std::size_t count_across = 1;   // 3D: the rows across the breadth
   double thickness = 0.0;    // m, t_sc (L of eq. 2.24)
   double smoothing_length = 0.0;  // m, h_sc of the screen's Wendland kernel (support 2 h_sc)
   double solidity = 0.0;     // S
   double porosity = 1.0;     // n_w = 1 - S (eq. 2.23)
   double permeability = 0.0; // m^2, K_P (eq. 2.22), ergun
   double loss_coefficient = 0.0;  // C_l, morison
-  double undisturbed_weight = 1.0;  // sum_f V_f W_jf of a full fluid lattice of spacing dp
+  double undisturbed_weight = 1.0;  // sum_f V_f W_jf of a full fluid lattice of spacing dp (3D: cubic)
   bool shepard_velocity = false;    // U_j Shepard-normalised (see ScreenParticles)
   std::size_t first = 0, count = 0; // particle range [first, first + count); count 0 for explicit slats
 };
 
-// Screen particles, structure of arrays, element by element.
-struct ScreenParticles {
-  std::vector<Vec2> position;           // m, tank frame (fixed)
+// Screen particles, structure of arrays, element by element. In 3D (issue 31) each element is the
+// section's centre line extruded over the tank's breadth: the particles of the 2D element repeated
+// on count_across rows across it (extrude_screen_particles).
+template <int D>
+struct BasicScreenParticles {
+  std::vector<Vec<D>> position;         // m, tank frame (fixed)
   std::vector<std::uint32_t> element;   // index into `elements`
   std::vector<ScreenElement> elements;  // every element of the case, explicit slats included
   // A screen particle is "in contact with the fluid" (wet, thesis 2.5.3) when the fluid covers at
@@ -97,8 +110,14 @@ struct ScreenParticles {
   // true: Shepard-normalised, U_j = sum_f V_f u_f W_jf / sum_f V_f W_jf.
 
   std::size_t size() const { return position.size(); }
-  double max_support() const;
+  double max_support() const {
+    double s = 0.0;
+    for (const ScreenElement& e : elements)
+      if (e.count > 0) s = std::max(s, 2.0 * e.smoothing_length);
+    return s;
+  }
 };
+using ScreenParticles = BasicScreenParticles<2>;
 
 // Samples every ergun/morison element along its centre line, clipped to the tank section: n =
 // ceil(length / dp_sc) particles at equal spacing length / n <= dp_sc, the end ones half a
@@ -111,27 +130,49 @@ struct ScreenParticles {
 ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, double dp, double h,
                                       const TankGeometry& tank, const std::string& where);
 
+// 3D: the section's screen particles extruded over the breadth: rows at y = (m + 1/2) breadth / n,
+// n = ceil(breadth / dp_sc) (spacing_across <= dp_sc), the section's particles on each, element by
+// element; the undisturbed weight is the cubic lattice's sum.
+BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp);
+
+// The screen particles of a scene's screens in D dimensions (3D: extruded over `breadth`).
+template <int D>
+BasicScreenParticles<D> make_screen_particles_in(const std::vector<ScreenSpec>& specs, double dp, double h,
+                                                 const TankGeometry& tank, double breadth, const std::string& where) {
+  ScreenParticles section = make_screen_particles(specs, dp, h, tank, where);
+  if constexpr (D == 2) {
+    (void)breadth;
+    return section;
+  } else {
+    return extrude_screen_particles(section, breadth, dp);
+  }
+}
+
 // ---------------------------------------------------------------------------------------
 // The drag stage.
 
 // What one element does this step (for the time series and validation).
-struct ScreenElementLoad {
-  Vec2 force_on_fluid;       // N/m, -sum_j F_d,j over the element's particles
-  Vec2 mean_velocity;        // m/s, mean of U_j over its wet particles (0 if none)
-  double wet_length = 0.0;   // m, wet particles x spacing
+template <int D>
+struct BasicScreenElementLoad {
+  Vec<D> force_on_fluid;     // N/m (3D: N), -sum_j F_d,j over the element's particles
+  Vec<D> mean_velocity;      // m/s, mean of U_j over its wet particles (0 if none)
+  double wet_length = 0.0;   // m, wet particles x spacing (3D: divided by the rows across)
   std::size_t wet_particles = 0;
 };
+using ScreenElementLoad = BasicScreenElementLoad<2>;
 
 // Buffers reused from step to step, and the per-particle state of the last call.
-struct ScreenDragWork {
-  CellGrid particle_grid;  // fluid and wall particles
-  CellGrid screen_grid;
-  std::vector<Vec2> velocity;       // U_j, m/s
-  std::vector<Vec2> drag;           // F_d,j, N/m (0 when dry)
+template <int D>
+struct BasicScreenDragWork {
+  BasicCellGrid<D> particle_grid;  // fluid and wall particles
+  BasicCellGrid<D> screen_grid;
+  std::vector<Vec<D>> velocity;     // U_j, m/s
+  std::vector<Vec<D>> drag;         // F_d,j, N/m (3D: N; 0 when dry)
   std::vector<double> fluid_weight; // S_j = sum_f W_jf (eq. 2.27 denominator), 1/m^2
   std::vector<double> wet_weight;   // sum_f V_f W_jf, fluid only
   std::vector<std::uint8_t> wet;
 };
+using ScreenDragWork = BasicScreenDragWork<2>;
 
 // Two gather passes, deterministic and independent of the thread count:
 //  (a) per screen particle j, over the fluid f within 2 h_sc (eq. 2.26):
@@ -151,9 +192,12 @@ struct ScreenDragWork {
 // n_fluid; the thesis uses the fluid state of the previous step, i.e. u(t)). V_f = p.volume,
 // m = p.mass. mu is the dynamic viscosity (Pa s). acceleration_out is resized to n_fluid
 // (m/s^2), loads_out to the number of elements.
-void screen_drag(const ScreenParticles& screens, const Particles& p, const std::vector<Vec2>& velocity, double rho,
-                 double mu, ScreenDragWork& work, std::vector<Vec2>& acceleration_out,
-                 std::vector<ScreenElementLoad>& loads_out);
+// In 3D the same with the 3D kernel, the normal (n_x, 0, n_z) of the extruded element and the
+// area A_p = spacing x spacing_across.
+template <int D>
+void screen_drag(const BasicScreenParticles<D>& screens, const BasicParticles<D>& p,
+                 const std::vector<Vec<D>>& velocity, double rho, double mu, BasicScreenDragWork<D>& work,
+                 std::vector<Vec<D>>& acceleration_out, std::vector<BasicScreenElementLoad<D>>& loads_out);
 
 // Convenience: velocities p.velocity, a fresh work area; force_per_element_out[e] =
 // loads[e].force_on_fluid.

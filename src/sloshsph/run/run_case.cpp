@@ -496,7 +496,7 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
   s["git_revision"] = kGitRevision;
   if (nlohmann::json response = analyse_response(spec, sim, series, dir); !response.is_null())
     s["response"] = response;
-  if (!sim.screens().elements.empty()) s["screens"] = screens_summary(sim.screens());
+  if (!sim.screens().elements.empty()) s["screens"] = screens_summary(sim.screens().elements);
   if (!spec.pressure_probes.empty())
     s["pressure_probes"] =
         pressure_probes_summary(spec.pressure_probes, sim.scene().pressure_sensors, column_names(sim), series.columns);

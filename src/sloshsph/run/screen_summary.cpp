@@ -10,13 +10,17 @@ void add_screen_particles(nlohmann::json& j, const ScreenElement& e) {
   j["spacing_m"] = e.spacing;
   j["interaction_radius_m"] = e.smoothing_length;
   j["velocity"] = e.shepard_velocity ? "shepard" : "thesis";
+  if (e.spacing_across > 0.0) {  // 3D: extruded over the breadth
+    j["rows_across"] = e.count_across;
+    j["spacing_across_m"] = e.spacing_across;
+  }
 }
 
 }  // namespace
 
-nlohmann::json screens_summary(const ScreenParticles& screens) {
+nlohmann::json screens_summary(const std::vector<ScreenElement>& elements) {
   nlohmann::json out = nlohmann::json::array();
-  for (const ScreenElement& e : screens.elements) {
+  for (const ScreenElement& e : elements) {
     nlohmann::json j = {{"name", e.name},
                         {"model", screen_model_name(e.model)},
                         {"solidity", e.solidity},

@@ -18,6 +18,7 @@ namespace sloshsph {
 //                permeability_m2 (K_P), velocity, equivalent_loss_coefficient
 //                (ergun_inertial_loss_coefficient);
 //   morison:     screen_particles, spacing_m, interaction_radius_m, velocity, loss_coefficient.
-nlohmann::json screens_summary(const ScreenParticles& screens);
+// In 3D (issue 31) also `rows_across` and `spacing_across_m` of each extruded element.
+nlohmann::json screens_summary(const std::vector<ScreenElement>& elements);
 
 }  // namespace sloshsph

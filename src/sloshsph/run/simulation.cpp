@@ -103,10 +103,11 @@ BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start)
       base_(spec.excitation, spec.time.end),
       base_y_(spec.excitation_y ? BaseMotionSource(*spec.excitation_y, spec.time.end) : BaseMotionSource()),
       scheme_(spec, scene_.h),
-      screens_(make_screen_particles(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, spec.source)),
+      screens_(make_screen_particles_in<D>(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, scene_.breadth,
+                                           spec.source)),
       pair_contact_(spec.particles.dp) {
-  acc_screen_force_.assign(screens_.elements.size(), Vec2{});
-  screen_loads_.assign(screens_.elements.size(), ScreenElementLoad{});
+  acc_screen_force_.assign(screens_.elements.size(), Vec<D>{});
+  screen_loads_.assign(screens_.elements.size(), BasicScreenElementLoad<D>{});
   linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
   c_full_ = scheme_.reference_density() / spec_.fluid.density;
@@ -237,9 +238,12 @@ void BasicSimulation<D>::build_columns() {
   }
   for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
     if (screens_.elements[e].count == 0) continue;  // explicit slats are walls: their force is in F_w
-    auto mean_force = [e](S s) { return s.acc_dt_ > 0.0 ? s.acc_screen_force_[e] / s.acc_dt_ : Vec2{}; };
-    add_column("F_screen:" + screens_.elements[e].name, "N/m", [mean_force](S s, B) { return mean_force(s).x; });
-    add_column("F_screen_y:" + screens_.elements[e].name, "N/m", [mean_force](S s, B) { return mean_force(s).y; });
+    auto mean_force = [e](S s) { return s.acc_dt_ > 0.0 ? s.acc_screen_force_[e] / s.acc_dt_ : Vec<D>{}; };
+    const std::string force_unit = D == 2 ? "N/m" : "N";
+    add_column("F_screen:" + screens_.elements[e].name, force_unit, [mean_force](S s, B) { return mean_force(s).x; });
+    add_column("F_screen_y:" + screens_.elements[e].name, force_unit, [mean_force](S s, B) { return mean_force(s).y; });
+    if constexpr (D == 3)  // as F_w, F_wy, F_wz: y across the breadth, z up
+      add_column("F_screen_z:" + screens_.elements[e].name, force_unit, [mean_force](S s, B) { return mean_force(s).z; });
   }
   // F_sw: the sloshing part, the wall force less the fluid's mass times the base acceleration.
   if constexpr (D == 2) {
@@ -410,14 +414,13 @@ void BasicSimulation<D>::step() {
   BasicStepInput<D> in;
   in.dt = dt;
   in.frame = frame_of(mid);
-  if constexpr (D == 2)
-    if (!screens_.position.empty()) {
-      // Thesis eqs. 2.25-2.28 with the fluid state at the start of the step.
-      in.extra = [this](const Particles& p, std::vector<Vec2>& a) {
-        screen_drag(screens_, p, p.velocity, spec_.fluid.density, spec_.fluid.density * spec_.fluid.viscosity,
-                    screen_work_, a, screen_loads_);
-      };
-    }
+  if (!screens_.position.empty()) {
+    // Thesis eqs. 2.25-2.28 with the fluid state at the start of the step.
+    in.extra = [this](const BasicParticles<D>& p, std::vector<Vec<D>>& a) {
+      screen_drag(screens_, p, p.velocity, spec_.fluid.density, spec_.fluid.density * spec_.fluid.viscosity,
+                  screen_work_, a, screen_loads_);
+    };
+  }
   try {
     scheme_.step(scene_.particles, in);
   } catch (...) {
@@ -439,11 +442,10 @@ void BasicSimulation<D>::step() {
     wall_contacts_ += contact.corrected;
     wall_force += contact.force_on_fluid;
   }
-  if constexpr (D == 2)
-    for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
-      wall_force += screen_loads_[e].force_on_fluid;
-      acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
-    }
+  for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
+    wall_force += screen_loads_[e].force_on_fluid;
+    acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
+  }
   if (structure_) {
     // F_w is the force of the walls ON the fluid (F_wy > 0 carries the weight): the fluid
     // pushes the tank with -F_w. Sloshing part for the next structure step (thesis 2.6.3.1).
@@ -612,7 +614,7 @@ void BasicSimulation<D>::reset_interval_sums() {
   acc_base_acceleration_y_ = 0.0;
   acc_tld_force_ = 0.0;
   acc_tld_force_y_ = 0.0;
-  for (Vec2& f : acc_screen_force_) f = {};
+  for (Vec<D>& f : acc_screen_force_) f = {};
   for (Vec2& f : acc_plate_force_) f = {};
 }
 
@@ -711,8 +713,8 @@ void BasicSimulation<D>::load_state(StateReader& r) {
   acc_wall_force_ = r.value<Vec<D>>("sim.acc_wall_force");
   acc_base_acceleration_ = r.value<double>("sim.acc_base_acceleration");
   work_on_fluid_ = r.value<double>("sim.work_on_fluid");
-  acc_screen_force_ = r.array<Vec2>("sim.acc_screen_force");
-  screen_loads_ = r.array<ScreenElementLoad>("sim.screen_loads");
+  acc_screen_force_ = r.array<Vec<D>>("sim.acc_screen_force");
+  screen_loads_ = r.array<BasicScreenElementLoad<D>>("sim.screen_loads");
   sloshing_force_ = r.value<double>("sim.sloshing_force");
   acc_tld_force_ = r.value<double>("sim.acc_tld_force");
   const bool has_structure = r.value<std::uint8_t>("sim.has_structure") != 0;

@@ -75,8 +75,8 @@ enum class SimulationStart { settled, for_checkpoint };
 
 // In 2D (Simulation) every feature of a case; in 3D (Simulation3, tank.dimensions = 3) the ISPH
 // scheme, a translation along excitation.direction, gauges, point probes and the structure with
-// its sway along x and y (issue 31): the screens and plates below are 2D only, and the case
-// reader refuses them in 3D.
+// its sway along x and y, and porous screens extruded over the breadth (issue 31): the explicit
+// slats and plates below are 2D only, and the case reader refuses them in 3D.
 template <int D>
 class BasicSimulation {
  public:
@@ -103,7 +103,7 @@ class BasicSimulation {
   const BasicScene<D>& scene() const { return scene_; }
   const BasicParticles<D>& particles() const { return scene_.particles; }
   const BasicAnyScheme<D>& scheme() const { return scheme_; }
-  const ScreenParticles& screens() const { return screens_; }
+  const BasicScreenParticles<D>& screens() const { return screens_; }
   // The imposed motion of [excitation]; with [structure] the ground motion under the structure.
   const BaseMotionSource& base() const { return base_; }
   // The imposed motion of [excitation] at t, in 3D in tank axes (in_tank_axes): with [structure]
@@ -174,10 +174,10 @@ class BasicSimulation {
   BaseMotionSource base_y_;  // [excitation.y] (3D): the motion along y; unused without it
   BasicAnyScheme<D> scheme_;
   // Porous screens (Ergun, Morison): their particles, buffers, and the last step's loads.
-  ScreenParticles screens_;
-  ScreenDragWork screen_work_;
-  std::vector<ScreenElementLoad> screen_loads_;
-  std::vector<Vec2> acc_screen_force_;  // interval sums of dt x force, per element
+  BasicScreenParticles<D> screens_;
+  BasicScreenDragWork<D> screen_work_;
+  std::vector<BasicScreenElementLoad<D>> screen_loads_;
+  std::vector<Vec<D>> acc_screen_force_;  // interval sums of dt x force, per element
   double time_ = 0.0;
   std::size_t steps_ = 0;
   double last_dt_ = 0.0;

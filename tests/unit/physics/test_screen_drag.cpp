@@ -284,3 +284,76 @@ TEST(ScreenDrag, AccelerationOnlyInTheInterfaceZone) {
 
 }  // namespace
 }  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+// 3D (issue 31): a screen is its section's element extruded over the breadth. A vertical Ergun
+// screen x = 0.5003 m, z from 0.4 to 0.6 m, over a breadth B = 0.1 m, in a uniform flow
+// u = (0.1, 0, 0) m/s of a cubic fluid lattice (dp = 20 mm, h = 1.4 dp) that extends beyond the
+// screen's kernel support on every side, also across y. References: the extruded particles (5 rows
+// across, 20 mm apart, at y = (m + 1/2) 20 mm; the undisturbed weight of the cubic lattice within 1%
+// of 1); the force on the fluid -(dP/L)(u) t_sc H B (thesis eq. 2.24 times the breadth) within 2%, as
+// the 2D test; the fluid receiving exactly that force (round-off); a flow along the screen's plane
+// (along y) not resisted by a Morison screen (exactly 0).
+BasicParticles<3> cube_lattice(Vec3 lo, Vec3 hi, double dp, Vec3 u) {
+  BasicParticles<3> p;
+  for (double z = lo.z + 0.5 * dp; z < hi.z; z += dp)
+    for (double y = lo.y + 0.5 * dp; y < hi.y; y += dp)
+      for (double x = lo.x + 0.5 * dp; x < hi.x; x += dp) {
+        p.position.push_back({x, y, z});
+        p.velocity.push_back(u);
+      }
+  p.n_fluid = p.position.size();
+  const std::size_t n = p.position.size();
+  p.pressure.assign(n, 0.0);
+  p.density.assign(n, kRho);
+  p.normal.assign(n, {});
+  p.id.resize(n);
+  for (std::size_t k = 0; k < n; ++k) p.id[k] = static_cast<std::int32_t>(k);
+  p.mass = kRho * dp * dp * dp;
+  p.volume = dp * dp * dp;
+  return p;
+}
+
+TEST(ScreenDrag, ExtrudedErgunScreenInThreeDimensions) {
+  const double dp = 0.02, h = 1.4 * dp, breadth = 0.1;
+  const ScreenParticles section = make_screen_particles(
+      {screen({0.5003, 0.4}, {0.5003, 0.6}, ScreenModel::ergun, 0.42)}, dp, h, big_tank(), "t");
+  const BasicScreenParticles<3> sp = extrude_screen_particles(section, breadth, dp);
+  const ScreenElement& e = sp.elements[0];
+  EXPECT_EQ(e.count_across, 5u);
+  EXPECT_EQ(e.count, section.elements[0].count * 5);
+  EXPECT_EQ(sp.size(), e.count);
+  EXPECT_NEAR(e.spacing_across, 0.02, 1e-15);
+  EXPECT_NEAR(sp.position[0].y, 0.01, 1e-15);
+  EXPECT_NEAR(sp.position[4].y, 0.09, 1e-15);
+  EXPECT_NEAR(e.undisturbed_weight, 1.0, 0.01);
+  const Vec3 u{0.1, 0.0, 0.0};
+  const BasicParticles<3> p = cube_lattice({0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, u);
+  BasicScreenDragWork<3> work;
+  std::vector<Vec3> acc;
+  std::vector<BasicScreenElementLoad<3>> loads;
+  screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
+  const double expected = -ergun_pressure_gradient<3>(kMu, kRho, e.permeability, e.porosity, u).x * 0.001 * 0.2 * breadth;
+  EXPECT_NEAR(loads[0].force_on_fluid.x, expected, 0.02 * std::abs(expected));
+  EXPECT_NEAR(loads[0].force_on_fluid.y, 0.0, 1e-12 * std::abs(expected));
+  EXPECT_NEAR(loads[0].force_on_fluid.z, 0.0, 1e-12 * std::abs(expected));
+  EXPECT_EQ(loads[0].wet_particles, sp.size());
+  EXPECT_NEAR(loads[0].wet_length, 0.2, 1e-12);
+  std::printf("  3D Ergun screen: F = %.6f N, eq. 2.24 x B: %.6f N, ratio %.6f\n", loads[0].force_on_fluid.x, expected,
+              loads[0].force_on_fluid.x / expected);
+  Vec3 received;
+  for (std::size_t i = 0; i < p.n_fluid; ++i) received += p.mass * acc[i];
+  EXPECT_NEAR(received.x, loads[0].force_on_fluid.x, 1e-12 * std::abs(expected));
+  // Morison: the flow along y lies in the extruded screen's plane.
+  const BasicScreenParticles<3> morison = extrude_screen_particles(
+      make_screen_particles({screen({0.5003, 0.4}, {0.5003, 0.6}, ScreenModel::morison, 0.42)}, dp, h, big_tank(), "t"),
+      breadth, dp);
+  const BasicParticles<3> along = cube_lattice({0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, {0.0, 0.1, 0.0});
+  screen_drag(morison, along, along.velocity, kRho, kMu, work, acc, loads);
+  EXPECT_EQ(norm(loads[0].force_on_fluid), 0.0);
+}
+
+}  // namespace
+}  // namespace sloshsph

@@ -37,7 +37,7 @@ TEST(ScreenSummary, KeysPerModel) {
   const std::vector<ScreenSpec> specs = {screen("E", ScreenModel::ergun, 0.3), screen("M", ScreenModel::morison, 0.5),
                                          screen("X", ScreenModel::explicit_slats, 0.7)};
   const double dp = 0.007;
-  const nlohmann::json j = screens_summary(make_screen_particles(specs, dp, 1.4 * dp, tank, "case.toml"));
+  const nlohmann::json j = screens_summary(make_screen_particles(specs, dp, 1.4 * dp, tank, "case.toml").elements);
   ASSERT_EQ(j.size(), 3u);
 
   const nlohmann::json& e = j[0];
