@@ -177,6 +177,9 @@ struct ScreenSpec {
   std::string name;
   Vec2 from, to;                 // m, the element's centre line
   bool full_height = false;      // given by `x`: a vertical screen from the bottom to the top of the walls
+  // 3D, given by `y` (issue 31): a full-height screen in the plane y = plane_y across the whole
+  // length of a box (its section element stands at x = length / 2 until the driver lays it out).
+  std::optional<double> plane_y;
   double solidity = 0.0;         // S = 1 - porosity (thesis eq. 2.23)
   double slat_height = 0.0;      // m, explicit slats (and S = h_slat / (h_slat + h_gap) if given)
   double slat_gap = 0.0;         // m

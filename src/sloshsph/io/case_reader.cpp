@@ -380,7 +380,19 @@ void read_screens(TableReader& root, CaseSpec& spec) {
     ScreenSpec sc;
     sc.name = r.string("name");
     check_name(r, "name", sc.name, names);
-    if (r.has("x")) {
+    if (r.has("y") && spec.tank.dimensions == 2)
+      r.fail("y", "a screen in the plane y = const is for 3D tanks (tank.dimensions = 3); a 2D screen takes 'x' or "
+                  "'from' and 'to'");
+    if (r.has("y")) {  // 3D (issue 31): a screen across the breadth
+      for (const char* other : {"x", "from", "to"})
+        if (r.has(other)) r.fail(other, "give either 'y' (a screen in the plane y = const) or 'x' or 'from' and 'to'");
+      sc.plane_y = r.number("y");
+      if (!(*sc.plane_y > 0.0 && *sc.plane_y < spec.tank.breadth))
+        r.fail("y", "the screen's plane must lie inside the tank: 0 < y < tank.breadth");
+      sc.full_height = true;
+      sc.from = {0.5 * spec.tank.length, 0.0};
+      sc.to = sc.from;
+    } else if (r.has("x")) {
       if (r.has("from") || r.has("to")) r.fail("x", "give either 'x' (a vertical screen) or 'from' and 'to', not both");
       sc.full_height = true;
       sc.from = {r.number("x"), 0.0};
@@ -685,6 +697,8 @@ void check_dimensions(const CaseSpec& s) {
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
     const std::string key = "screens." + std::to_string(k);
     if (s.screens[k].model == ScreenModel::explicit_slats) fail(key + ".model", "explicit slats" + not_yet);
+    if (s.screens[k].plane_y && s.tank.shape != "rectangle")
+      fail(key + ".y", "a screen across the breadth (y) is available in a box (shape = \"rectangle\") only");
     if (s.tank.shape == "cylinder")
       fail(key, "a screen in a cylinder" + not_yet + " (a screen is the section's element extruded over the breadth "
                 "of a box or prism)");
@@ -1190,7 +1204,9 @@ std::string resolved_case_toml(const CaseSpec& s) {
   toml::array screens;
   for (const ScreenSpec& sc : s.screens) {
     toml::table t{{"name", sc.name}};
-    if (sc.full_height) {
+    if (sc.plane_y) {
+      t.insert("y", *sc.plane_y);
+    } else if (sc.full_height) {
       t.insert("x", sc.from.x);
     } else {
       t.insert("from", toml::array{sc.from.x, sc.from.y});

@@ -137,22 +137,26 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
   return out;
 }
 
-BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp) {
+BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp,
+                                                 const std::vector<ScreenSpec>& specs, double length) {
   BasicScreenParticles<3> out;
   out.wet_fraction = section.wet_fraction;
   for (std::size_t index = 0; index < section.elements.size(); ++index) {
     ScreenElement e = section.elements[index];
     const std::size_t first = e.first, count = e.count;
     e.first = out.position.size();
+    if (index < specs.size()) e.plane_y = specs[index].plane_y;
     if (count > 0) {
+      const double extent = e.plane_y ? length : breadth;  // along which the element is repeated
       e.count_across = std::max<std::size_t>(
-          1, static_cast<std::size_t>(std::ceil(breadth / e.nominal_spacing - 1e-9)));
-      e.spacing_across = breadth / static_cast<double>(e.count_across);
+          1, static_cast<std::size_t>(std::ceil(extent / e.nominal_spacing - 1e-9)));
+      e.spacing_across = extent / static_cast<double>(e.count_across);
       e.undisturbed_weight = lattice_weight3(e.smoothing_length, dp);
       for (std::size_t k = first; k < first + count; ++k)
         for (std::size_t m = 0; m < e.count_across; ++m) {
           const Vec2 q = section.position[k];
-          out.position.push_back({q.x, (static_cast<double>(m) + 0.5) * e.spacing_across, q.y});
+          const double along = (static_cast<double>(m) + 0.5) * e.spacing_across;
+          out.position.push_back(e.plane_y ? Vec3{along, *e.plane_y, q.y} : Vec3{q.x, along, q.y});
           out.element.push_back(static_cast<std::uint32_t>(index));
         }
       e.count = count * e.count_across;
@@ -171,7 +175,7 @@ namespace {
 template <int D>
 Vec<D> element_normal(const ScreenElement& e) {
   if constexpr (D == 2) return e.normal;
-  else return {e.normal.x, 0.0, e.normal.y};
+  else return e.plane_y ? Vec3{0.0, 1.0, 0.0} : Vec3{e.normal.x, 0.0, e.normal.y};
 }
 
 template <int D>

@@ -17,6 +17,7 @@
 // it opposes the flow. The load on the tank through the screen supports is its negative.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,10 @@ struct ScreenElement {
   double spacing = 0.0;      // m, actual spacing = length / count <= dp_sc (A_p per unit width)
   double spacing_across = 0.0;    // m, 3D: the spacing across the breadth (A_p = spacing x spacing_across)
   std::size_t count_across = 1;   // 3D: the rows across the breadth
+  // 3D: a screen in the plane y = plane_y (ScreenSpec::plane_y): its section element is the
+  // vertical column of particles, repeated along the length instead (count_across columns
+  // spacing_across apart), normal (0, 1, 0).
+  std::optional<double> plane_y;
   double thickness = 0.0;    // m, t_sc (L of eq. 2.24)
   double smoothing_length = 0.0;  // m, h_sc of the screen's Wendland kernel (support 2 h_sc)
   double solidity = 0.0;     // S
@@ -132,8 +137,11 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
 
 // 3D: the section's screen particles extruded over the breadth: rows at y = (m + 1/2) breadth / n,
 // n = ceil(breadth / dp_sc) (spacing_across <= dp_sc), the section's particles on each, element by
-// element; the undisturbed weight is the cubic lattice's sum.
-BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp);
+// element; the undisturbed weight is the cubic lattice's sum. An element whose spec has plane_y
+// (specs[k], empty specs: none) is the section's vertical column repeated along the length instead,
+// at x = (m + 1/2) length / n, n = ceil(length / dp_sc), in the plane y = plane_y.
+BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp,
+                                                 const std::vector<ScreenSpec>& specs = {}, double length = 0.0);
 
 // The screen particles of a scene's screens in D dimensions (3D: extruded over `breadth`).
 template <int D>
@@ -144,7 +152,7 @@ BasicScreenParticles<D> make_screen_particles_in(const std::vector<ScreenSpec>& 
     (void)breadth;
     return section;
   } else {
-    return extrude_screen_particles(section, breadth, dp);
+    return extrude_screen_particles(section, breadth, dp, specs, tank.x_max - tank.x_min);
   }
 }
 

@@ -10,10 +10,11 @@ void add_screen_particles(nlohmann::json& j, const ScreenElement& e) {
   j["spacing_m"] = e.spacing;
   j["interaction_radius_m"] = e.smoothing_length;
   j["velocity"] = e.shepard_velocity ? "shepard" : "thesis";
-  if (e.spacing_across > 0.0) {  // 3D: extruded over the breadth
+  if (e.spacing_across > 0.0) {  // 3D: extruded over the breadth (or, in the plane y = plane_y, the length)
     j["rows_across"] = e.count_across;
     j["spacing_across_m"] = e.spacing_across;
   }
+  if (e.plane_y) j["plane_y_m"] = *e.plane_y;  // from, to: its vertical column, repeated along x
 }
 
 }  // namespace

@@ -362,6 +362,26 @@ TEST(CaseReader, ThreeDimensionalRotationKeys) {
   EXPECT_EQ(pitch.excitation.axis.y, -1.0);  // the default: the 2D pitch's sense
 }
 
+// Issue 31, section 2: a screen across the breadth, `y` (3D boxes): its plane y = const, full height,
+// over the whole length; the resolved case reads back; `y` with `x`, outside the breadth or in a
+// prism is refused by name.
+TEST(CaseReader, ScreenAcrossTheBreadthKeys) {
+  const std::string box = box3d_text();
+  const std::string across = "\n[[screens]]\nname = \"Y\"\ny = 0.1\nsolidity = 0.4\nmodel = \"morison\"\n";
+  const CaseSpec s = read_case_text(box + across, "case.toml", {});
+  ASSERT_EQ(s.screens.size(), 1u);
+  ASSERT_TRUE(s.screens[0].plane_y);
+  EXPECT_EQ(*s.screens[0].plane_y, 0.1);
+  EXPECT_TRUE(s.screens[0].full_height);
+  const CaseSpec again = read_case_text(resolved_case_toml(s), "resolved.toml", {});
+  ASSERT_TRUE(again.screens.at(0).plane_y);
+  EXPECT_EQ(*again.screens[0].plane_y, 0.1);
+  expect_error(box + "\n[[screens]]\nname = \"Y\"\ny = 0.1\nx = 0.2\nsolidity = 0.4\n", {}, "screens.0.x", "'y'");
+  expect_error(box + "\n[[screens]]\nname = \"Y\"\ny = 0.25\nsolidity = 0.4\n", {}, "screens.0.y", "breadth");
+  expect_error(box + across, {"tank.shape=\"circular\""}, "screens.0.y", "box");
+  expect_error(kMinimal + across, {}, "screens.0.y", "3D tanks");
+}
+
 // An upright cylinder: radius and height; it spans 2R in x and y (exact: no arithmetic but 2R), and
 // its resolved case reads back.
 TEST(CaseReader, CylinderKeys) {

@@ -355,5 +355,38 @@ TEST(ScreenDrag, ExtrudedErgunScreenInThreeDimensions) {
   EXPECT_EQ(norm(loads[0].force_on_fluid), 0.0);
 }
 
+// A screen across the breadth (plane_y, issue 31): the section's vertical column (z from 0.4 to
+// 0.6 m, standing in for it at x = 0.5003 m) laid along the length L = 0.1 m in the plane y = 0.05 m,
+// in a uniform flow along y. Reference: the particles at x = (m + 1/2) 20 mm, y = 0.05 m; the force
+// -(dP/L)(u) t_sc H L along y (eq. 2.24 times the length) within 2%; a Morison screen in that plane
+// does not resist a flow along x (exactly 0).
+TEST(ScreenDrag, ScreenAcrossTheBreadthInThreeDimensions) {
+  const double dp = 0.02, h = 1.4 * dp, length = 0.1;
+  ScreenSpec across = screen({0.5003, 0.4}, {0.5003, 0.6}, ScreenModel::ergun, 0.42);
+  across.plane_y = 0.05;
+  const BasicScreenParticles<3> sp = extrude_screen_particles(
+      make_screen_particles({across}, dp, h, big_tank(), "t"), 0.5, dp, {across}, length);
+  const ScreenElement& e = sp.elements[0];
+  EXPECT_EQ(e.count_across, 5u);
+  EXPECT_NEAR(sp.position[0].x, 0.01, 1e-15);
+  EXPECT_EQ(sp.position[0].y, 0.05);
+  const Vec3 u{0.0, 0.1, 0.0};
+  const BasicParticles<3> p = cube_lattice({-0.2, -0.2, 0.2}, {0.3, 0.3, 0.8}, dp, u);
+  BasicScreenDragWork<3> work;
+  std::vector<Vec3> acc;
+  std::vector<BasicScreenElementLoad<3>> loads;
+  screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
+  const double expected = -ergun_pressure_gradient<3>(kMu, kRho, e.permeability, e.porosity, u).y * 0.001 * 0.2 * length;
+  EXPECT_NEAR(loads[0].force_on_fluid.y, expected, 0.02 * std::abs(expected));
+  EXPECT_NEAR(loads[0].force_on_fluid.x, 0.0, 1e-12 * std::abs(expected));
+  ScreenSpec morison = across;
+  morison.model = ScreenModel::morison;
+  const BasicScreenParticles<3> mp = extrude_screen_particles(
+      make_screen_particles({morison}, dp, h, big_tank(), "t"), 0.5, dp, {morison}, length);
+  const BasicParticles<3> along = cube_lattice({-0.2, -0.2, 0.2}, {0.3, 0.3, 0.8}, dp, {0.1, 0.0, 0.0});
+  screen_drag(mp, along, along.velocity, kRho, kMu, work, acc, loads);
+  EXPECT_EQ(norm(loads[0].force_on_fluid), 0.0);
+}
+
 }  // namespace
 }  // namespace sloshsph
