@@ -121,7 +121,7 @@ UtubeFit fit_ergun_factor(const std::string& velocity) {
   };
   auto flux = [&](double dh, double c) {
     // u from c * Ergun(u) = dP: the positive root of c (a u + b u^2) = dP.
-    const double a = c * norm(ergun_pressure_gradient(mu, rho, K, n, {1.0, 0.0})) * t_sc;  // a + b at u = 1
+    const double a = c * norm(ergun_pressure_gradient(mu, rho, K, n, Vec2{1.0, 0.0})) * t_sc;  // a + b at u = 1
     const double b = c * t_sc * 1.75 / std::sqrt(150.0) * rho / (std::sqrt(K) * std::pow(n, 1.5));
     const double a_lin = a - b;  // viscous part
     auto u = [&](double dP) { return (-a_lin + std::sqrt(a_lin * a_lin + 4.0 * b * std::max(dP, 0.0))) / (2.0 * b); };

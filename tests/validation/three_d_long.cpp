@@ -370,6 +370,35 @@ TEST(ValidationLong, ScreenedSlabReproducesTheTwoDimensionalTaitRun) {
   check_at_most("particles outside the slab", static_cast<double>(slab3.leaked), 0.0, "none may leave");
 }
 
+// Issue 31, section 2: explicit slats in 3D, the section's slat walls on every lattice plane across
+// the breadth. The Biswal et al. (2006) tank with its two solid baffles (cases/biswal_baffles_explicit.toml:
+// 1 m, 0.5 m of water, baffles 0.3 m long at 0.1 m from the bottom at both walls) at dp = 20 mm,
+// dt = 2 ms, forced below resonance (X0 = 10 mm at 0.8 omega1 of the unbaffled tank), for 4 s, in 2D
+// and as a slab 4 dp = 80 mm broad (gauge on the middle plane). Checked over 1-4 s: the RMS of the
+// gauge within 5% of the 2D run's (the issue's bar for a slab) and of the base shear per metre of
+// breadth (F_w / breadth) within 5%; 0 particles lost. Why not the case's own forcing (0.995 omega1):
+// at resonance the response depends on the scheme's own frequency, which at h = 1.4 dp is further
+// above theory in 3D than in 2D (the box's (1,0) mode: +9.25% against +5.90%), so the slab departs
+// from 2D there with or without baffles (measured: -9.6% gauge, -10.6% F_w at dp = 10 mm with the
+// baffles; -49% gauge without them at dp = 20 mm), a test of that excess and not of the slats
+// (docs/validation/notes.md).
+TEST(ValidationLong, BaffledSlabReproducesTheTwoDimensionalBiswalRun) {
+  const std::vector<std::string> common = {"particles.dp=0.02", "time.dt=0.002", "time.end=4.0", "excitation.beta=0.8",
+                                           "excitation.amplitude=0.01", "output.snapshot_interval=0"};
+  std::vector<std::string> slab = common;
+  for (const char* set : {"tank.dimensions=3", "tank.breadth=0.08", "probes.gauge.0.y=0.04"}) slab.push_back(set);
+  const testing::RunResult two = testing::run_case_in_memory("biswal_baffles_explicit.toml", common);
+  const testing::RunResult three =
+      testing::run_file_in_memory<3>(testing::case_path("biswal_baffles_explicit.toml"), slab, [](const Simulation3&) {});
+  check_relative("RMS of eta:right over 1-4 s, baffled 3D slab against 2D", rms_between(three, "eta:right", 1.0, 4.0),
+                 rms_between(two, "eta:right", 1.0, 4.0), 0.05, "the 2D run of the same case (issue 31: 5% for a slab)",
+                 "m");
+  check_relative("RMS of F_w per metre of breadth over 1-4 s, baffled 3D slab against 2D",
+                 rms_between(three, "F_w", 1.0, 4.0) / 0.08, rms_between(two, "F_w", 1.0, 4.0), 0.05,
+                 "the 2D run of the same case", "N/m");
+  check_at_most("particles outside the slab", static_cast<double>(three.leaked), 0.0, "none may leave");
+}
+
 // Issue 31, section 3: pitch in 3D. A thin slab of the Akyildiz & Erdem (2006) pitching tank
 // (cases/akyildiz_erdem_pitch.toml: 0.92 m, 75% fill, 4 deg at 2 rad/s about the tank's centre) at
 // dp = 20 mm, dt = 2 ms, for 6 s, in 2D and as a 3D slab 4 dp = 80 mm broad turned about the axis

@@ -220,6 +220,13 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
 
 }  // namespace
 
+// A fluid particle is kept clear of slats and plates: no closer than 0.9 dp to one of their particles.
+static bool clear_of(Vec2 f, const std::vector<WallSample>& solids, double dp) {
+  for (const WallSample& w : solids)
+    if (norm2(f - w.position) < 0.81 * dp * dp) return false;
+  return true;
+}
+
 // Screen k of the case: a full-height screen runs from the bottom to the top of the walls at its x.
 static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank, std::size_t k) {
   ScreenSpec sc = spec.screens[k];
@@ -239,12 +246,36 @@ Scene3 build_scene3(const CaseSpec& spec) {
   const PrismTank prism{*tank, spec.tank.breadth};
   check_probes_3d(spec, [&prism](Vec3 p) { return prism.signed_distance(p); }, tank->y_top);
   const double dp = spec.particles.dp;
-  Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth,
-                               fill_fluid(prism, dp, spec.fill.depth), sample_walls(prism, dp, spec.particles.wall_layers));
+  std::vector<Vec3> fluid = fill_fluid(prism, dp, spec.fill.depth);
+  std::vector<WallSample3> walls = sample_walls(prism, dp, spec.particles.wall_layers);
+  // Screens: ergun and morison elements are extruded over the breadth by the driver
+  // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it.
+  std::vector<ScreenSpec> screens;
+  std::vector<WallSample> slats;
+  std::vector<std::string> warnings;
+  for (std::size_t k = 0; k < spec.screens.size(); ++k) {
+    const ScreenSpec sc = resolved_screen(spec, *tank, k);
+    const std::string key = "screens." + std::to_string(k);
+    if (sc.model == ScreenModel::explicit_slats) {
+      SlatLayout layout = explicit_slat_layout(sc, dp, *tank, spec.where(key + ".model"), key);
+      slats.insert(slats.end(), layout.walls.begin(), layout.walls.end());
+      for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
+    }
+    screens.push_back(sc);
+  }
+  if (!slats.empty()) {
+    const std::vector<WallSample3> extruded = extrude_inside(slats, prism, dp);
+    walls.insert(walls.end(), extruded.begin(), extruded.end());
+    std::vector<Vec3> kept;  // the slats stand on every plane: a particle's distance to them is its section's
+    for (const Vec3& f : fluid)
+      if (clear_of(in_section(f), slats, dp)) kept.push_back(f);
+    fluid.swap(kept);
+  }
+  Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
   add_fill_warning(spec, *tank, fill_fluid(*tank, dp, spec.fill.depth).size(), scene.warnings);
   add_breadth_warning(spec, scene.warnings);
-  // Screens (ergun, morison): the section's element extruded over the breadth (physics/porous.hpp).
-  for (std::size_t k = 0; k < spec.screens.size(); ++k) scene.screens.push_back(resolved_screen(spec, *tank, k));
+  scene.screens = std::move(screens);
+  scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
   return scene;
 }
 
@@ -288,20 +319,12 @@ Scene build_scene(const CaseSpec& spec) {
     walls.insert(walls.end(), layout.walls.begin(), layout.walls.end());
     scene.plates.push_back(std::move(layout));
   }
-  // No fluid inside the slats and plates: drop fluid particles closer than 0.9 dp to one of their particles.
+  // No fluid inside the slats and plates.
   if (walls.size() > tank_walls) {
-    std::vector<Vec2> slats;
-    for (std::size_t k = tank_walls; k < walls.size(); ++k) slats.push_back(walls[k].position);
+    const std::vector<WallSample> solids(walls.begin() + static_cast<std::ptrdiff_t>(tank_walls), walls.end());
     std::vector<Vec2> kept;
-    for (const Vec2& f : fluid) {
-      bool clear = true;
-      for (const Vec2& w : slats)
-        if (norm2(f - w) < 0.81 * scene.dp * scene.dp) {
-          clear = false;
-          break;
-        }
-      if (clear) kept.push_back(f);
-    }
+    for (const Vec2& f : fluid)
+      if (clear_of(f, solids, scene.dp)) kept.push_back(f);
     fluid.swap(kept);
   }
 
