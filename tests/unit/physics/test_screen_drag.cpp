@@ -19,6 +19,19 @@ namespace {
 constexpr double kRho = 1000.0;
 constexpr double kMu = 1.0e-3;
 
+// Pressure 0, density rho, ids in order, and the mass and volume of a particle of spacing dp (2D or 3D).
+template <int D>
+void set_rest_state(BasicParticles<D>& p, double dp) {
+  const std::size_t n = p.position.size();
+  p.pressure.assign(n, 0.0);
+  p.density.assign(n, kRho);
+  p.normal.assign(n, {});
+  p.id.resize(n);
+  for (std::size_t k = 0; k < n; ++k) p.id[k] = static_cast<std::int32_t>(k);
+  p.volume = D == 2 ? dp * dp : dp * dp * dp;
+  p.mass = kRho * p.volume;
+}
+
 // Fluid on the lattice ((i + 1/2) dp, (j + 1/2) dp) + origin covering [x0, x1] x [y0, y1], all
 // with velocity u; then `wall_layers` rows of wall particles below y0 (at y0 - (k + 1/2) dp).
 Particles lattice(double x0, double x1, double y0, double y1, double dp, Vec2 u, int wall_layers = 0) {
@@ -36,14 +49,7 @@ Particles lattice(double x0, double x1, double y0, double y1, double dp, Vec2 u,
       p.position.push_back({x0 + (i + 0.5) * dp, y0 - (k + 0.5) * dp});
       p.velocity.push_back({});
     }
-  const std::size_t n = p.position.size();
-  p.pressure.assign(n, 0.0);
-  p.density.assign(n, kRho);
-  p.normal.assign(n, {});
-  p.id.resize(n);
-  for (std::size_t k = 0; k < n; ++k) p.id[k] = static_cast<std::int32_t>(k);
-  p.mass = kRho * dp * dp;
-  p.volume = dp * dp;
+  set_rest_state(p, dp);
   return p;
 }
 
@@ -305,15 +311,25 @@ BasicParticles<3> cube_lattice(Vec3 lo, Vec3 hi, double dp, Vec3 u) {
         p.velocity.push_back(u);
       }
   p.n_fluid = p.position.size();
-  const std::size_t n = p.position.size();
-  p.pressure.assign(n, 0.0);
-  p.density.assign(n, kRho);
-  p.normal.assign(n, {});
-  p.id.resize(n);
-  for (std::size_t k = 0; k < n; ++k) p.id[k] = static_cast<std::int32_t>(k);
-  p.mass = kRho * dp * dp * dp;
-  p.volume = dp * dp * dp;
+  set_rest_state(p, dp);
   return p;
+}
+
+// The drag of 3D screen particles `sp` in the uniform flow u of the cube lattice [lo, hi] (dp), and
+// the force the fluid receives.
+struct UniformFlowDrag {
+  BasicScreenElementLoad<3> load;
+  Vec3 received;
+};
+UniformFlowDrag drag_in_uniform_flow(const BasicScreenParticles<3>& sp, Vec3 lo, Vec3 hi, double dp, Vec3 u) {
+  const BasicParticles<3> p = cube_lattice(lo, hi, dp, u);
+  BasicScreenDragWork<3> work;
+  std::vector<Vec3> acc;
+  std::vector<BasicScreenElementLoad<3>> loads;
+  screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
+  UniformFlowDrag out{loads[0], {}};
+  for (std::size_t i = 0; i < p.n_fluid; ++i) out.received += p.mass * acc[i];
+  return out;
 }
 
 TEST(ScreenDrag, ExtrudedErgunScreenInThreeDimensions) {
@@ -330,29 +346,22 @@ TEST(ScreenDrag, ExtrudedErgunScreenInThreeDimensions) {
   EXPECT_NEAR(sp.position[4].y, 0.09, 1e-15);
   EXPECT_NEAR(e.undisturbed_weight, 1.0, 0.01);
   const Vec3 u{0.1, 0.0, 0.0};
-  const BasicParticles<3> p = cube_lattice({0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, u);
-  BasicScreenDragWork<3> work;
-  std::vector<Vec3> acc;
-  std::vector<BasicScreenElementLoad<3>> loads;
-  screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
+  const UniformFlowDrag d = drag_in_uniform_flow(sp, {0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, u);
   const double expected = -ergun_pressure_gradient<3>(kMu, kRho, e.permeability, e.porosity, u).x * 0.001 * 0.2 * breadth;
-  EXPECT_NEAR(loads[0].force_on_fluid.x, expected, 0.02 * std::abs(expected));
-  EXPECT_NEAR(loads[0].force_on_fluid.y, 0.0, 1e-12 * std::abs(expected));
-  EXPECT_NEAR(loads[0].force_on_fluid.z, 0.0, 1e-12 * std::abs(expected));
-  EXPECT_EQ(loads[0].wet_particles, sp.size());
-  EXPECT_NEAR(loads[0].wet_length, 0.2, 1e-12);
-  std::printf("  3D Ergun screen: F = %.6f N, eq. 2.24 x B: %.6f N, ratio %.6f\n", loads[0].force_on_fluid.x, expected,
-              loads[0].force_on_fluid.x / expected);
-  Vec3 received;
-  for (std::size_t i = 0; i < p.n_fluid; ++i) received += p.mass * acc[i];
-  EXPECT_NEAR(received.x, loads[0].force_on_fluid.x, 1e-12 * std::abs(expected));
+  EXPECT_NEAR(d.load.force_on_fluid.x, expected, 0.02 * std::abs(expected));
+  EXPECT_NEAR(d.load.force_on_fluid.y, 0.0, 1e-12 * std::abs(expected));
+  EXPECT_NEAR(d.load.force_on_fluid.z, 0.0, 1e-12 * std::abs(expected));
+  EXPECT_EQ(d.load.wet_particles, sp.size());
+  EXPECT_NEAR(d.load.wet_length, 0.2, 1e-12);
+  std::printf("  3D Ergun screen: F = %.6f N, eq. 2.24 x B: %.6f N, ratio %.6f\n", d.load.force_on_fluid.x, expected,
+              d.load.force_on_fluid.x / expected);
+  EXPECT_NEAR(d.received.x, d.load.force_on_fluid.x, 1e-12 * std::abs(expected));
   // Morison: the flow along y lies in the extruded screen's plane.
   const BasicScreenParticles<3> morison = extrude_screen_particles(
       make_screen_particles({screen({0.5003, 0.4}, {0.5003, 0.6}, ScreenModel::morison, 0.42)}, dp, h, big_tank(), "t"),
       breadth, dp);
-  const BasicParticles<3> along = cube_lattice({0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, {0.0, 0.1, 0.0});
-  screen_drag(morison, along, along.velocity, kRho, kMu, work, acc, loads);
-  EXPECT_EQ(norm(loads[0].force_on_fluid), 0.0);
+  EXPECT_EQ(norm(drag_in_uniform_flow(morison, {0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, {0.0, 0.1, 0.0}).load.force_on_fluid),
+            0.0);
 }
 
 // A screen across the breadth (plane_y, issue 31): the section's vertical column (z from 0.4 to
@@ -371,21 +380,16 @@ TEST(ScreenDrag, ScreenAcrossTheBreadthInThreeDimensions) {
   EXPECT_NEAR(sp.position[0].x, 0.01, 1e-15);
   EXPECT_EQ(sp.position[0].y, 0.05);
   const Vec3 u{0.0, 0.1, 0.0};
-  const BasicParticles<3> p = cube_lattice({-0.2, -0.2, 0.2}, {0.3, 0.3, 0.8}, dp, u);
-  BasicScreenDragWork<3> work;
-  std::vector<Vec3> acc;
-  std::vector<BasicScreenElementLoad<3>> loads;
-  screen_drag(sp, p, p.velocity, kRho, kMu, work, acc, loads);
+  const UniformFlowDrag d = drag_in_uniform_flow(sp, {-0.2, -0.2, 0.2}, {0.3, 0.3, 0.8}, dp, u);
   const double expected = -ergun_pressure_gradient<3>(kMu, kRho, e.permeability, e.porosity, u).y * 0.001 * 0.2 * length;
-  EXPECT_NEAR(loads[0].force_on_fluid.y, expected, 0.02 * std::abs(expected));
-  EXPECT_NEAR(loads[0].force_on_fluid.x, 0.0, 1e-12 * std::abs(expected));
+  EXPECT_NEAR(d.load.force_on_fluid.y, expected, 0.02 * std::abs(expected));
+  EXPECT_NEAR(d.load.force_on_fluid.x, 0.0, 1e-12 * std::abs(expected));
   ScreenSpec morison = across;
   morison.model = ScreenModel::morison;
   const BasicScreenParticles<3> mp = extrude_screen_particles(
       make_screen_particles({morison}, dp, h, big_tank(), "t"), 0.5, dp, {morison}, length);
-  const BasicParticles<3> along = cube_lattice({-0.2, -0.2, 0.2}, {0.3, 0.3, 0.8}, dp, {0.1, 0.0, 0.0});
-  screen_drag(mp, along, along.velocity, kRho, kMu, work, acc, loads);
-  EXPECT_EQ(norm(loads[0].force_on_fluid), 0.0);
+  EXPECT_EQ(norm(drag_in_uniform_flow(mp, {-0.2, -0.2, 0.2}, {0.3, 0.3, 0.8}, dp, {0.1, 0.0, 0.0}).load.force_on_fluid),
+            0.0);
 }
 
 }  // namespace
