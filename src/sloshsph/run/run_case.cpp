@@ -502,11 +502,17 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
         pressure_probes_summary(spec.pressure_probes, sim.scene().pressure_sensors, column_names(sim), series.columns);
   if (spec.structure_y && !series.columns.empty()) {
     // 3D: the sway along y, analysed as the sway along x below (summary "structure_y",
-    // admittance_y.csv); its equivalent TMD is not worked out (a 2D tank's linear theory).
+    // admittance_y.csv; the equivalent TMD of a box's mode across the breadth).
     StructureSeries ss = structure_series(column_names(sim), series.columns, "", "_y");
     if (spec.structure->ground_from_excitation)
       for (const double t : ss.time) ss.ground_acceleration.push_back(sim.ground_motion(t).acceleration_y);
     s["structure_y"] = structure_summary(ss, *spec.structure_y);
+    if (spec.structure->tanks >= 1 && spec.structure_y->load.type == StructureLoadType::noise) {
+      const nlohmann::json& admittance = s["structure_y"].value("admittance", nlohmann::json::object());
+      std::optional<double> measured;
+      if (admittance.contains("effective_damping_ratio")) measured = admittance["effective_damping_ratio"].get<double>();
+      s["structure_y"]["equivalent_tmd"] = equivalent_tmd_summary(spec, measured, true);
+    }
     if (auto a = structure_admittance(ss, *spec.structure_y))
       write_file_atomic((fs::path(dir) / "admittance_y.csv").string(), admittance_csv(*a));
   }
@@ -516,7 +522,7 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
     if (spec.structure->ground_from_excitation)  // the same ground motion for the structure without tanks
       for (const double t : ss.time) ss.ground_acceleration.push_back(sim.ground_motion(t).acceleration.x);
     s["structure"] = structure_summary(ss, *spec.structure);
-    if (spec.tank.dimensions == 2 && spec.structure->tanks >= 1 && spec.structure->load.type == StructureLoadType::noise) {
+    if (spec.structure->tanks >= 1 && spec.structure->load.type == StructureLoadType::noise) {
       const nlohmann::json& admittance = s["structure"].value("admittance", nlohmann::json::object());
       std::optional<double> measured;
       if (admittance.contains("effective_damping_ratio")) measured = admittance["effective_damping_ratio"].get<double>();

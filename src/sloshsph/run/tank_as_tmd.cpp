@@ -60,9 +60,30 @@ nlohmann::json equivalent_tmd_json(const TankAsTmd& t, const std::vector<Equival
   return j;
 }
 
-nlohmann::json equivalent_tmd_summary(const CaseSpec& spec, std::optional<double> measured_effective_damping) {
+CaseSpec sway_section_case(const CaseSpec& spec, bool along_y) {
+  const std::string key = along_y ? "structure.y" : "structure";
+  if (spec.tank.shape == "cylinder")
+    throw InputError(spec.where(key), key, "a cylinder has no 2D section for the linear estimate");
+  if (along_y && spec.tank.shape != "rectangle")
+    throw InputError(spec.where(key), key, "the linear estimate across the breadth needs a box (shape = \"rectangle\")");
+  const std::optional<StructureSpec>& mode = along_y ? spec.structure_y : spec.structure;
+  if (!mode) throw InputError(spec.source, key, "the case has no [" + key + "]");
+  CaseSpec s = spec;
+  s.tank.dimensions = 2;
+  const double across = along_y ? spec.tank.length : spec.tank.breadth;  // the tank's other extent
+  if (along_y) s.tank.length = spec.tank.breadth;
+  s.structure = mode;
+  s.structure->tank_width = across;
+  s.structure->rigid_mass = mode->rigid_mass / across;
+  s.structure_y.reset();
+  s.excitation_y.reset();
+  return s;
+}
+
+nlohmann::json equivalent_tmd_summary(const CaseSpec& spec, std::optional<double> measured_effective_damping,
+                                      bool along_y) {
   try {
-    const TankAsTmd t = tank_as_tmd(spec);
+    const TankAsTmd t = tank_as_tmd(spec.tank.dimensions == 3 ? sway_section_case(spec, along_y) : spec);
     nlohmann::json j = equivalent_tmd_json(t, {}, optimal_equivalent_tmd(t.tmd, t.band_low, t.band_high));
     j["method"] = "linear: mode 1 as a mass on a spring (structure/equivalent_tmd.hpp); screens and floors ignored";
     j["tank_damping_for_measured_effective_damping"] = nullptr;

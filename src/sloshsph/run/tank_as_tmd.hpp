@@ -33,6 +33,16 @@ nlohmann::json equivalent_tmd_json(const TankAsTmd& t, const std::vector<Equival
 // tank damping a linear TMD of the same mass and tuning needs to give the run's measured zeta_eff
 // (`tank_damping_for_measured_effective_damping`, null if none does). A tank the modal solver
 // cannot take gives {"note": why} instead: the end of a long run must not fail here.
-nlohmann::json equivalent_tmd_summary(const CaseSpec& spec, std::optional<double> measured_effective_damping);
+// In 3D (issue 31) the estimate of the sway along x, or with along_y that of [structure.y], from
+// sway_section_case.
+nlohmann::json equivalent_tmd_summary(const CaseSpec& spec, std::optional<double> measured_effective_damping,
+                                      bool along_y = false);
+
+// A 3D case's sway along x (or, with along_y, along y) as the 2D case tank_as_tmd takes: the
+// section the liquid sloshes in along that direction (along x the case's section; along y a box's
+// breadth as the length of a rectangle of the same depth), the tank's other extent as tank_width
+// (rigid_mass, per tank in 3D, divided by it), and that direction's sway mode as [structure].
+// Throws InputError for a cylinder, and along y for anything but a box.
+CaseSpec sway_section_case(const CaseSpec& spec, bool along_y);
 
 }  // namespace sloshsph
