@@ -227,6 +227,24 @@ static bool clear_of(Vec2 f, const std::vector<WallSample>& solids, double dp) {
   return true;
 }
 
+// Explicit slats across the breadth of a box (issue 31): `section_walls`, the slat walls of a vertical
+// screen at x = x_line in the section (x, z), turned so that x - x_line runs along y from y = plane_y
+// (normals (0, n_x, n_z)), on the fill lattice's lines x = x_min + (i + 1/2) dp along the length; the
+// fluid is kept 0.9 dp clear of them in that turned plane.
+static void add_slats_across(const std::vector<WallSample>& section_walls, double x_line, double plane_y,
+                             const TankGeometry& section, double dp, std::vector<Vec3>& fluid,
+                             std::vector<WallSample3>& walls) {
+  const int n_x = static_cast<int>(std::floor((section.x_max - section.x_min) / dp + 1e-9));
+  for (const WallSample& w : section_walls)
+    for (int i = 0; i < n_x; ++i)
+      walls.push_back({{section.x_min + (i + 0.5) * dp, plane_y + (w.position.x - x_line), w.position.y},
+                       {0.0, w.normal.x, w.normal.y}});
+  std::vector<Vec3> kept;
+  for (const Vec3& f : fluid)
+    if (clear_of({x_line + (f.y - plane_y), f.z}, section_walls, dp)) kept.push_back(f);
+  fluid.swap(kept);
+}
+
 // Screen k of the case: a full-height screen runs from the bottom to the top of the walls at its x.
 static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank, std::size_t k) {
   ScreenSpec sc = spec.screens[k];
@@ -249,7 +267,9 @@ Scene3 build_scene3(const CaseSpec& spec) {
   std::vector<Vec3> fluid = fill_fluid(prism, dp, spec.fill.depth);
   std::vector<WallSample3> walls = sample_walls(prism, dp, spec.particles.wall_layers);
   // Screens: ergun and morison elements are extruded over the breadth by the driver
-  // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it.
+  // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it, or,
+  // across the breadth (plane_y, boxes), the slat walls of the section's vertical screen at x_line
+  // turned into the plane y = plane_y and repeated along the length.
   std::vector<ScreenSpec> screens;
   std::vector<WallSample> slats;
   std::vector<std::string> warnings;
@@ -258,7 +278,8 @@ Scene3 build_scene3(const CaseSpec& spec) {
     const std::string key = "screens." + std::to_string(k);
     if (sc.model == ScreenModel::explicit_slats) {
       SlatLayout layout = explicit_slat_layout(sc, dp, *tank, spec.where(key + ".model"), key);
-      slats.insert(slats.end(), layout.walls.begin(), layout.walls.end());
+      if (sc.plane_y) add_slats_across(layout.walls, sc.from.x, *sc.plane_y, *tank, dp, fluid, walls);
+      else slats.insert(slats.end(), layout.walls.begin(), layout.walls.end());
       for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
     }
     screens.push_back(sc);

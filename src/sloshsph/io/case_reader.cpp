@@ -696,8 +696,6 @@ void check_dimensions(const CaseSpec& s) {
   if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
     const std::string key = "screens." + std::to_string(k);
-    if (s.screens[k].plane_y && s.screens[k].model == ScreenModel::explicit_slats)
-      fail(key + ".model", "explicit slats across the breadth (y)" + not_yet + "; explicit slats take 'x' or 'from' and 'to'");
     if (s.screens[k].plane_y && s.tank.shape != "rectangle")
       fail(key + ".y", "a screen across the breadth (y) is available in a box (shape = \"rectangle\") only");
     if (s.tank.shape == "cylinder")

@@ -4,6 +4,7 @@
 // (The 2D instantiations are the ones every other test and the regression references run.)
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -338,6 +339,69 @@ TEST(ThreeD, SpsClosureOfAPlaneFlowIsThePlaneOne) {
   EXPECT_NEAR(a3.x, a2.x, 1e-12);
   EXPECT_NEAR(a3.y, a2.y, 1e-12);
   EXPECT_EQ(a3.z, 0.0);
+}
+
+}  // namespace
+}  // namespace sloshsph
+
+#include <algorithm>
+#include <string>
+
+#include "sloshsph/geometry/scene.hpp"
+#include "sloshsph/io/case_reader.hpp"
+
+namespace sloshsph {
+namespace {
+
+// Issue 31, section 2: explicit slats across the breadth of a box. In a square box (0.6 x 0.6 m,
+// dp = 20 mm) a slatted screen in the plane y = 0.3 m is the mirror image (x <-> y) of the same
+// screen at x = 0.3 m: the same fluid particles and the same slat wall particles, mirrored, to
+// round-off (1e-12 m; the turned walls are computed as 0.3 + (x - 0.3)).
+std::string square_box(const std::string& where) {
+  return "[tank]\ndimensions = 3\nshape = \"rectangle\"\nlength = 0.6\nbreadth = 0.6\nheight = 0.3\n"
+         "[fill]\ndepth = 0.1\n[particles]\ndp = 0.02\n[time]\nend = 0.1\n"
+         "[[screens]]\nname = \"S\"\n" + where + "\nslat_height = 0.02\nslat_gap = 0.02\nthickness = 0.004\n"
+         "model = \"explicit\"\n";
+}
+
+TEST(ThreeD, ExplicitSlatsAcrossTheBreadthMirrorThoseAcrossTheLength) {
+  const Scene3 along_x = build_scene3(read_case_text(square_box("x = 0.3"), "x.toml", {}));
+  const Scene3 along_y = build_scene3(read_case_text(square_box("y = 0.3"), "y.toml", {}));
+  const BasicParticles<3>& a = along_x.particles;
+  const BasicParticles<3>& b = along_y.particles;
+  ASSERT_EQ(a.n_fluid, b.n_fluid);
+  ASSERT_EQ(a.size(), b.size());
+  auto mirrored = [](Vec3 p) { return Vec3{p.y, p.x, p.z}; };
+  auto sorted = [](std::vector<Vec3> v) {
+    std::sort(v.begin(), v.end(), [](Vec3 p, Vec3 q) {
+      const auto key = [](Vec3 r) { return std::array<long, 3>{std::lround(r.x * 1e6), std::lround(r.y * 1e6), std::lround(r.z * 1e6)}; };
+      return key(p) < key(q);
+    });
+    return v;
+  };
+  std::vector<Vec3> fluid_a, fluid_b;
+  for (std::size_t i = 0; i < a.n_fluid; ++i) fluid_a.push_back(mirrored(a.position[i]));
+  for (std::size_t i = 0; i < b.n_fluid; ++i) fluid_b.push_back(b.position[i]);
+  fluid_a = sorted(fluid_a), fluid_b = sorted(fluid_b);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < fluid_a.size(); ++i) worst = std::max(worst, norm(fluid_a[i] - fluid_b[i]));
+  EXPECT_LT(worst, 1e-12);
+  // The slat walls: the wall particles whose normal is horizontal and not an end or side wall's, i.e.
+  // those of the screen (the tank's walls are the same in both scenes, as a square box is symmetric).
+  auto slat_walls = [&](const BasicParticles<3>& p, bool mirror) {
+    std::vector<Vec3> out;
+    for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
+      const Vec3 q = p.position[w];
+      if (q.x > 0.05 && q.x < 0.55 && q.y > 0.05 && q.y < 0.55 && q.z > 0.0) out.push_back(mirror ? mirrored(q) : q);
+    }
+    return sorted(out);
+  };
+  const std::vector<Vec3> slats_a = slat_walls(a, true), slats_b = slat_walls(b, false);
+  ASSERT_EQ(slats_a.size(), slats_b.size());
+  ASSERT_GT(slats_a.size(), 0u);
+  worst = 0.0;
+  for (std::size_t i = 0; i < slats_a.size(); ++i) worst = std::max(worst, norm(slats_a[i] - slats_b[i]));
+  EXPECT_LT(worst, 1e-12);
 }
 
 }  // namespace
