@@ -547,8 +547,12 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   std::string with_face = box;
   with_face.replace(with_face.find("z = 0.005\n"), 10, "z = 0.005\nto = [0.2, 0.05]\n");
   expect_error(with_face, {}, "probes.pressure.0.to", "not available in 3D");
-  expect_error(box + "\n[[screens]]\nname = \"s\"\ny = 0.1\nslat_height = 0.01\nslat_gap = 0.01\nmodel = \"explicit\"\n",
-               {}, "screens.0.model", "not available in 3D");
+  // Explicit slats across the breadth read (their layout: ThreeD.ExplicitSlatsAcrossTheBreadth...).
+  EXPECT_TRUE(read_case_text(box + "\n[[screens]]\nname = \"s\"\ny = 0.1\nslat_height = 0.01\nslat_gap = 0.01\n"
+                                   "model = \"explicit\"\n",
+                             "case.toml", {})
+                  .screens.at(0)
+                  .plane_y.has_value());
   expect_error(read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml") +
                    "\n[[screens]]\nname = \"s\"\nx = 0.15\nsolidity = 0.4\nmodel = \"morison\"\n",
                {}, "screens.0", "cylinder");
