@@ -49,28 +49,6 @@ Vec2 morison_pressure_drop(double rho, double loss_coefficient, Vec2 velocity) {
 
 namespace {
 
-// sum_f V W_jf over an unbounded fluid lattice of spacing dp, at a lattice node: the value of
-// the kernel sum of a screen particle deep in undisturbed fluid (1 up to the lattice error).
-double lattice_weight(double h_sc, double dp) {
-  const WendlandC2 k(h_sc);
-  const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
-  double sum = 0.0;
-  for (int a = -n; a <= n; ++a)
-    for (int b = -n; b <= n; ++b) sum += k.w(dp * std::sqrt(double(a * a + b * b)));
-  return sum * dp * dp;
-}
-
-// The same over the cubic lattice with the 3D kernel.
-double lattice_weight3(double h_sc, double dp) {
-  const WendlandC2 k(h_sc, 3);
-  const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
-  double sum = 0.0;
-  for (int a = -n; a <= n; ++a)
-    for (int b = -n; b <= n; ++b)
-      for (int c = -n; c <= n; ++c) sum += k.w(dp * std::sqrt(double(a * a + b * b + c * c)));
-  return sum * dp * dp * dp;
-}
-
 void check_non_negative(double v, const std::string& where, const std::string& key) {
   if (!(v >= 0.0)) throw InputError(where, key, "must not be negative");
 }
@@ -119,7 +97,9 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
       e.loss_coefficient =
           spec.loss_coefficient > 0.0 ? spec.loss_coefficient : slat_screen_loss_coefficient(e.solidity);
     }
-    e.undisturbed_weight = lattice_weight(e.smoothing_length, dp);
+    // sum_f V W_jf of a full fluid lattice at a node: a screen particle deep in undisturbed fluid.
+    e.undisturbed_weight =
+        times_particle_volume<2>(lattice_number_density(KernelType::wendland_c2, e.smoothing_length, dp, 2), dp);
     e.shepard_velocity = spec.shepard_velocity;
 
     // Equal spacing <= dp_sc; a length that is a whole number of dp_sc (to round-off) keeps dp_sc.
@@ -151,7 +131,8 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
       e.count_across = std::max<std::size_t>(
           1, static_cast<std::size_t>(std::ceil(extent / e.nominal_spacing - 1e-9)));
       e.spacing_across = extent / static_cast<double>(e.count_across);
-      e.undisturbed_weight = lattice_weight3(e.smoothing_length, dp);
+      e.undisturbed_weight =
+          times_particle_volume<3>(lattice_number_density(KernelType::wendland_c2, e.smoothing_length, dp, 3), dp);
       for (std::size_t k = first; k < first + count; ++k)
         for (std::size_t m = 0; m < e.count_across; ++m) {
           const Vec2 q = section.position[k];

@@ -398,17 +398,18 @@ void BasicSimulation<D>::step() {
   const BaseMotion before = tank_motion();
   // Body force at the middle of the step: second-order in time for the imposed motion.
   BaseMotion mid = ground_motion(time_ + 0.5 * dt);
+  BaseMotion after = ground_motion(time_ + dt);  // the ground at the end; the tank's is added below
   // Restored if the fluid step fails.
   std::optional<StructureCoupling> structure_before = structure_, structure_y_before = structure_y_;
   if (structure_) {
     // Thesis 4.2.3: the structure moves first (with the sloshing force of the last step), the
     // fluid then feels the structure's mean absolute acceleration over the step (a_n + a_n+1)/2,
     // which is exactly Newmark's velocity change / dt (run/structure_coupling.hpp).
-    structure_->advance(dt, sloshing_force_, ground_motion(time_ + dt).acceleration.x);
+    structure_->advance(dt, sloshing_force_, after.acceleration.x);
     mid.acceleration.x = 0.5 * (before.acceleration.x + structure_->absolute_acceleration());
   }
   if (structure_y_) {  // 3D: the sway along y, the same way
-    structure_y_->advance(dt, sloshing_force_y_, ground_motion(time_ + dt).acceleration_y);
+    structure_y_->advance(dt, sloshing_force_y_, after.acceleration_y);
     mid.acceleration_y = 0.5 * (before.acceleration_y + structure_y_->absolute_acceleration());
   }
   BasicStepInput<D> in;
@@ -429,7 +430,6 @@ void BasicSimulation<D>::step() {
     throw;
   }
 
-  BaseMotion after = ground_motion(time_ + dt);
   if (!plates_.empty()) advance_plates(dt, frame_force(spec_.fluid.gravity, after));  // 2D only
   if (structure_) after.displacement.x += structure_->displacement();
   if (structure_y_) after.displacement_y += structure_y_->displacement();

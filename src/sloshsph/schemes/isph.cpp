@@ -39,41 +39,6 @@ std::uint8_t free_surface_flag(double fluid_sum, double wall_sum, double total, 
   return fluid_fraction < kSplashFraction ? 2 : total < threshold * full ? 1 : 0;
 }
 
-namespace {
-
-// Calls f(a, b, c) for every point (a, b, c) of the square (dimensions 2, c = 0) or cubic (3)
-// integer lattice within n steps of the origin along each axis, in one fixed order (c, a, b).
-template <class F>
-void for_each_lattice_point(int dimensions, int n, F&& f) {
-  const int nc = dimensions == 3 ? n : 0;
-  for (int c = -nc; c <= nc; ++c)
-    for (int a = -n; a <= n; ++a)
-      for (int b = -n; b <= n; ++b) f(a, b, c);
-}
-
-// dp^2 or dp^3, and x dp^2 or x dp^3, multiplied out in the order the 2D code always had them
-// (so that 2D keeps its bits).
-template <int D>
-double particle_volume(double dp) {
-  if constexpr (D == 2) return dp * dp;
-  else return dp * dp * dp;
-}
-
-}  // namespace
-
-double lattice_number_density(KernelType type, double h, double dp, int dimensions) {
-  return with_kernel(
-      type, h,
-      [&](const auto& k) {
-        const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
-        double sum = 0.0;
-        for_each_lattice_point(dimensions, n,
-                               [&](int a, int b, int c) { sum += k.w(dp * std::sqrt(double(a * a + b * b + c * c))); });
-        return sum;
-      },
-      dimensions);
-}
-
 template <int D>
 BasicIsphScheme<D>::BasicIsphScheme(const CaseSpec& spec, double h)
     : scheme_(spec.scheme),
@@ -99,7 +64,7 @@ BasicIsphScheme<D>::BasicIsphScheme(const CaseSpec& spec, double h)
         for_each_lattice_point(D, n, [&](int a, int b, int c) {
           if (a == 0 && b == 0 && c == 0) return;
           const double r2 = dp * dp * (a * a + b * b + c * c);
-          lambda_full_ += laplacian_weight(particle_volume<D>(dp), k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
+          lambda_full_ += laplacian_weight(times_particle_volume<D>(1.0, dp), k.gradient_factor(std::sqrt(r2)), r2, eta2_) / rho0_;
         });
         shifting_.w_dp = k.w(dp);
       },

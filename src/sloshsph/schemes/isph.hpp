@@ -136,17 +136,8 @@ class BasicIsphScheme {
 using IsphScheme = BasicIsphScheme<2>;
 using IsphScheme3 = BasicIsphScheme<3>;
 
-// Kernel sum m * sum_j W(r_ij) of an interior particle of a square (cubic) lattice of spacing dp,
-// divided by the particle mass: the number density of undisturbed fluid (about 1/dp^2, 1/dp^3).
-double lattice_number_density(KernelType type, double h, double dp, int dimensions = 2);
-
-// x dp^D, multiplied out in this order (so that 2D keeps its bits): a density times a particle's
-// volume (area in 2D) is its mass.
-template <int D>
-double times_particle_volume(double x, double dp) {
-  if constexpr (D == 2) return x * dp * dp;
-  else return x * dp * dp * dp;
-}
+// lattice_number_density and times_particle_volume (the reference density of both schemes) are in
+// sph/kernel.hpp, where the screens' undisturbed weight uses them too.
 
 // The free-surface flag of a fluid particle from its kernel sums, in any one unit (densities or
 // concentrations): `fluid_sum` and `wall_sum` the shares of fluid and wall neighbours, `total` the

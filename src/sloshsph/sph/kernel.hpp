@@ -4,6 +4,7 @@
 // Each kernel offers w(r), and gradient_factor(r) = (dW/dr) / r, so that
 // grad_i W_ij = gradient_factor(r_ij) * (r_i - r_j): no division by r, safe at r = 0.
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "sloshsph/core/case_spec.hpp"
@@ -115,6 +116,40 @@ template <class F>
 decltype(auto) with_kernel(KernelType type, double h, F&& f, int dimensions = 2) {
   if (type == KernelType::cubic_spline) return f(CubicSpline(h, dimensions));
   return f(WendlandC2(h, dimensions));
+}
+
+// Calls f(a, b, c) for every point (a, b, c) of the square (dimensions 2, c = 0) or cubic (3)
+// integer lattice within n steps of the origin along each axis, in one fixed order (c, a, b).
+template <class F>
+void for_each_lattice_point(int dimensions, int n, F&& f) {
+  const int nc = dimensions == 3 ? n : 0;
+  for (int c = -nc; c <= nc; ++c)
+    for (int a = -n; a <= n; ++a)
+      for (int b = -n; b <= n; ++b) f(a, b, c);
+}
+
+// sum_j W(|r_j|) over the full square (2D) or cubic (3D) lattice of spacing dp around a node, the
+// node itself included: the kernel sum of a particle deep in undisturbed fluid, per unit volume
+// (area) of a particle (times_particle_volume turns it into sum_j V_j W).
+inline double lattice_number_density(KernelType type, double h, double dp, int dimensions = 2) {
+  return with_kernel(
+      type, h,
+      [&](const auto& k) {
+        const int n = static_cast<int>(std::ceil(k.support() / dp)) + 1;
+        double sum = 0.0;
+        for_each_lattice_point(dimensions, n,
+                               [&](int a, int b, int c) { sum += k.w(dp * std::sqrt(double(a * a + b * b + c * c))); });
+        return sum;
+      },
+      dimensions);
+}
+
+// x dp^D, multiplied out in this order (so that 2D keeps its bits): a density times a particle's
+// volume (area in 2D) is its mass.
+template <int D>
+double times_particle_volume(double x, double dp) {
+  if constexpr (D == 2) return x * dp * dp;
+  else return x * dp * dp * dp;
 }
 
 }  // namespace sloshsph
