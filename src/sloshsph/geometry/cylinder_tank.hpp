@@ -4,6 +4,8 @@
 // cylinder stands at (R, R), so that the tank fills 0 <= x, y <= 2R like a box of side 2R, and the
 // bottom is z = 0.
 #include <cmath>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "sloshsph/core/vec2.hpp"
@@ -23,6 +25,21 @@ struct CylinderTank {
   // the two distances (at the edge, at most the true distance).
   double signed_distance(Vec3 p) const { return std::min(radius - from_axis(p), p.z); }
 };
+
+// The signed distance (positive inside) of a case's tank in D dimensions: in 2D its section
+// (TankGeometry::signed_distance); in 3D the upright cylinder's, or the section extruded over the
+// breadth (container_signed_distance). For what marks wall particles by their depth in the wall
+// (the repulsive layers of both schemes). Throws InputError(where, "tank...") for a bad tank.
+template <int D>
+std::function<double(Vec<D>)> tank_signed_distance(const TankSpec& spec, const std::string& where) {
+  if constexpr (D == 2) {
+    return [tank = make_tank(spec, where)](Vec2 p) { return tank.signed_distance(p); };
+  } else if (spec.shape == "cylinder") {
+    return [tank = CylinderTank{spec.radius, spec.height}](Vec3 p) { return tank.signed_distance(p); };
+  } else {
+    return [tank = PrismTank{make_tank(spec, where), spec.breadth}](Vec3 p) { return tank.signed_distance(p); };
+  }
+}
 
 // Dummy wall particles, `layers` deep:
 //  * the side: layer k (0 .. layers - 1) on the cylinder of radius R + (k + 1/2) dp, n_k =

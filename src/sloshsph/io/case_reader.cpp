@@ -685,11 +685,8 @@ void check_dimensions(const CaseSpec& s) {
     fail("structure.tank_width", "is the width of a 2D section; a 3D tank's forces are the whole tank's (its breadth "
                                  "is tank.breadth): remove it");
   const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH and WCSPH "
-                              "schemes with Adami walls, translations along x and y, rotations, a 2-DOF structure, "
+                              "schemes with Adami or repulsive walls, translations along x and y, rotations, a 2-DOF structure, "
                               "porous screens across the breadth, gauges and point pressure probes";
-  if (s.scheme.type == "wcsph" && s.scheme.wcsph.walls == WallTreatment::repulsive)
-    fail("scheme.walls", "Shao's repulsive wall particles" + not_yet);
-  if (s.scheme.repulsive_walls) fail("scheme.repulsive_walls", "the repulsive wall force" + not_yet);
   if (s.excitation.type == ExcitationType::pitch && (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0))
     fail("excitation.direction", "is the direction of a translation; a rotation turns about 'axis'");
   if (!s.fill.blocks.empty()) fail("fill.blocks", "fill blocks" + not_yet);

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/core/state_io.hpp"
+#include "sloshsph/geometry/cylinder_tank.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/wall_repulsion.hpp"
 #include "sloshsph/physics/walls.hpp"
@@ -116,22 +118,20 @@ void BasicIsphScheme<D>::update_neighbours(ParticleSet& p) {
 // The first layer of the tank walls: sample_walls puts it dp/2 outside the wall surface (the
 // next layers at 3dp/2, ...); explicit screen slats stand inside the section and are left out
 // (the fluid must pass between them). Each gets D = coefficient g max(H_w, h) (eq. 3.18,
-// physics/wall_repulsion.hpp), H_w the still-water depth above it.
+// physics/wall_repulsion.hpp), H_w the still-water depth above it (the height is y in 2D, z in 3D).
 template <int D>
 void BasicIsphScheme<D>::mark_repulsive_layer(const ParticleSet& p) {
   repulsion_strength_.assign(p.n_wall(), 0.0);
   if (!scheme_.repulsive_walls) return;
-  if constexpr (D == 3) {
-    throw std::logic_error("scheme.repulsive_walls is not available in 3D");
-  } else {
-  const TankGeometry tank = make_tank(tank_, tank_where_);
-  const double level = tank.y_bottom + still_depth_;
+  const std::function<double(Vec<D>)> distance = tank_signed_distance<D>(tank_, tank_where_);
+  // The bottom of a cylinder is z = 0 (it has no section to ask).
+  const double bottom = tank_.shape == "cylinder" ? 0.0 : make_tank(tank_, tank_where_).y_bottom;
+  const double level = bottom + still_depth_;
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
-    const double d = tank.signed_distance(p.position[w]);
+    const double d = distance(p.position[w]);
     if (d < 0.0 && d > -dp_)
       repulsion_strength_[w - p.n_fluid] =
-          scheme_.repulsive_coefficient * gravity_ * std::max(level - p.position[w].y, h_);
-  }
+          scheme_.repulsive_coefficient * gravity_ * std::max(level - component(p.position[w], D - 1), h_);
   }
 }
 

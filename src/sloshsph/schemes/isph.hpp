@@ -61,8 +61,7 @@ using IsphData = BasicIsphData<2>;
 enum class IsphStage { sps_stress, predict, density_and_ppe_source, pressure_solve, correct_and_advance, shift };
 
 // In 2 or 3 dimensions (IsphScheme is the 2D one, IsphScheme3 the 3D one; instantiated for both in
-// isph.cpp). In 3D the particles, tank and case come from the caller (no case reads a 3D tank
-// yet), and the repulsive walls of thesis eq. 3.18 are not available.
+// isph.cpp). The repulsive walls of thesis eq. 3.18 act from the first wall layer in either.
 template <int D>
 class BasicIsphScheme {
  public:
@@ -89,6 +88,9 @@ class BasicIsphScheme {
   const BasicNeighbourList<D>& neighbours() const { return neighbours_; }
   double reference_density() const { return rho_ref_; }
   double h() const { return h_; }
+  // scheme.repulsive_walls: the strength D of each wall particle (index w - n_fluid; 0 outside the
+  // first layer of the tank walls), set by the first step. Empty before it and without the option.
+  const std::vector<double>& repulsion_strength() const { return repulsion_strength_; }
   // Checkpoints: besides the particles, ISPH keeps its neighbour list and the multigrid hierarchy
   // (with what decides whether it is kept) between steps.
   void save_state(StateWriter& w) const;

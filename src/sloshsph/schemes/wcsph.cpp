@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/cylinder_tank.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/physics/repulsive_force.hpp"
 #include "sloshsph/physics/walls.hpp"
@@ -170,16 +172,15 @@ void BasicWcsphScheme<D>::update_neighbours(ParticleSet& p, double dt, const Fra
 
 // Shao's repulsive particles are the first layer of wall particles: sample_walls puts it
 // dp/2 outside the wall surface, at the lattice spacing dp from the first fluid row, so the
-// repulsive force (zero beyond dp, Shao eq. 27) vanishes for fluid at rest as it is placed.
+// repulsive force (zero beyond dp, Shao eq. 27) vanishes for fluid at rest as it is placed. In 3D
+// the first layer of the side, end and bottom walls (or the cylinder's side and bottom) alike.
 template <int D>
 void BasicWcsphScheme<D>::mark_repulsive_layer(const ParticleSet& p) {
   repulsive_.assign(p.n_wall(), 0);
-  if constexpr (D == 2) {  // 3D: refused by the case reader
-    if (spec_.walls != WallTreatment::repulsive) return;
-    const TankGeometry tank = make_tank(tank_, tank_where_);
-    for (std::size_t w = p.n_fluid; w < p.size(); ++w)
-      repulsive_[w - p.n_fluid] = tank.signed_distance(p.position[w]) > -dp_ ? 1 : 0;
-  }
+  if (spec_.walls != WallTreatment::repulsive) return;
+  const std::function<double(Vec<D>)> distance = tank_signed_distance<D>(tank_, tank_where_);
+  for (std::size_t w = p.n_fluid; w < p.size(); ++w)
+    repulsive_[w - p.n_fluid] = distance(p.position[w]) > -dp_ ? 1 : 0;
 }
 
 template <int D>

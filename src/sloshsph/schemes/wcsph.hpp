@@ -19,8 +19,7 @@
 // result does not depend on the number of threads).
 //
 // Written once for 2 and 3 dimensions (issue 31): BasicWcsphScheme<D>; WcsphScheme is the 2D one,
-// WcsphScheme3 the 3D one. Shao's repulsive wall particles are 2D only (the case reader refuses
-// them in 3D).
+// WcsphScheme3 the 3D one; Shao's repulsive wall particles are the first wall layer in either.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -106,6 +105,9 @@ class BasicWcsphScheme {
   // the driver's gauges.
   double reference_density() const { return rho_ref_; }
   double h() const { return h_; }
+  // Per wall particle (index w - n_fluid): 1 in Shao's repulsive layer (walls = "repulsive"), set by
+  // initialise; all 0 with Adami walls.
+  const std::vector<std::uint8_t>& repulsive_layer() const { return repulsive_; }
   MemoryParts memory_parts() const;
 
  private:
