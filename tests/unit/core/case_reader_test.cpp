@@ -536,7 +536,10 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(kMinimal, {"tank={shape=\"cylinder\", radius=0.2, height=0.4}"}, "tank.shape", "dimensions = 3");
   expect_error(box, {"tank={dimensions=3, shape=\"cylinder\", radius=0.2, height=0.4, breadth=0.4}"}, "tank.breadth",
                "radius and height");
-  expect_error(box, {"scheme={type=\"wcsph\", walls=\"repulsive\"}"}, "scheme.walls", "not available in 3D");
+  // Both schemes' repulsive walls read in 3D (what they do: RepulsiveWallsThreeD, Validation.RepulsiveWalls...).
+  EXPECT_EQ(read_case_text(box, "case.toml", {"scheme={type=\"wcsph\", walls=\"repulsive\"}"}).scheme.wcsph.walls,
+            WallTreatment::repulsive);
+  EXPECT_TRUE(read_case_text(box, "case.toml", {"scheme.repulsive_walls=true"}).scheme.repulsive_walls);
   // A rotation in 3D: the pivot is [x, y, z], the axis not zero, and no translation's direction.
   expect_error(box, {"excitation={type=\"pitch\", angle=2.0, frequency=1.0, pivot=[0.2, 0.1]}"}, "excitation.pivot",
                "[x, y, z]");
