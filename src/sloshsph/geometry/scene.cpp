@@ -192,8 +192,22 @@ Scene3 three_d_scene(const CaseSpec& spec, std::shared_ptr<const TankGeometry> t
   return scene;
 }
 
+// Screen k of the case: a full-height screen runs from the bottom to the top of the walls at its x.
+static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank, std::size_t k) {
+  ScreenSpec sc = spec.screens[k];
+  if (sc.full_height) {
+    const std::string key = "screens." + std::to_string(k);
+    if (sc.from.x <= tank.x_min || sc.from.x >= tank.x_max)
+      throw InputError(spec.where(key + ".x"), key + ".x", "the screen is outside the tank");
+    sc.from = {sc.from.x, tank.bottom_at(sc.from.x)};
+    sc.to = {sc.from.x, tank.y_top};
+  }
+  return sc;
+}
+
 // An upright cylinder: the fluid on the cubic lattice inside it, its side and bottom walls; the
-// scene's section is the rectangle 2R x height it stands in.
+// scene's section is the rectangle 2R x height it stands in. Screens (ergun and morison, vertical:
+// the case reader refuses others) are extruded over the chord their plane cuts by the driver.
 Scene3 build_cylinder_scene(const CaseSpec& spec) {
   const CylinderTank cylinder{spec.tank.radius, spec.tank.height};
   TankSpec box = spec.tank;
@@ -204,6 +218,7 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
   Scene3 scene = three_d_scene(spec, tank, 2.0 * cylinder.radius, spec.fill.depth, fill_fluid(cylinder, dp, spec.fill.depth),
                                sample_walls(cylinder, dp, spec.particles.wall_layers));
   scene.cylinder = cylinder;
+  for (std::size_t k = 0; k < spec.screens.size(); ++k) scene.screens.push_back(resolved_screen(spec, *tank, k));
   // The square lattice leaves a ring of gaps inside the round wall: the water settles lower.
   const double level = cylinder_settled_level(cylinder, scene.particles.n_fluid, dp);
   if (spec.fill.depth - level > 0.2 * dp) {
@@ -243,19 +258,6 @@ static void add_slats_across(const std::vector<WallSample>& section_walls, doubl
   for (const Vec3& f : fluid)
     if (clear_of({x_line + (f.y - plane_y), f.z}, section_walls, dp)) kept.push_back(f);
   fluid.swap(kept);
-}
-
-// Screen k of the case: a full-height screen runs from the bottom to the top of the walls at its x.
-static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank, std::size_t k) {
-  ScreenSpec sc = spec.screens[k];
-  if (sc.full_height) {
-    const std::string key = "screens." + std::to_string(k);
-    if (sc.from.x <= tank.x_min || sc.from.x >= tank.x_max)
-      throw InputError(spec.where(key + ".x"), key + ".x", "the screen is outside the tank");
-    sc.from = {sc.from.x, tank.bottom_at(sc.from.x)};
-    sc.to = {sc.from.x, tank.y_top};
-  }
-  return sc;
 }
 
 Scene3 build_scene3(const CaseSpec& spec) {

@@ -693,11 +693,22 @@ void check_dimensions(const CaseSpec& s) {
   if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
     const std::string key = "screens." + std::to_string(k);
-    if (s.screens[k].plane_y && s.tank.shape != "rectangle")
-      fail(key + ".y", "a screen across the breadth (y) is available in a box (shape = \"rectangle\") only");
-    if (s.tank.shape == "cylinder")
-      fail(key, "a screen in a cylinder" + not_yet + " (a screen is the section's element extruded over the breadth "
-                "of a box or prism)");
+    const ScreenSpec& sc = s.screens[k];
+    if (sc.plane_y && s.tank.shape != "rectangle" && s.tank.shape != "cylinder")
+      fail(key + ".y", "a screen across the breadth (y) is available in a box (shape = \"rectangle\") or a cylinder "
+                       "only");
+    if (s.tank.shape != "cylinder") continue;
+    // In a cylinder: a vertical plane x = c or y = c, over the chord it cuts from the circle.
+    if (sc.model == ScreenModel::explicit_slats)
+      fail(key + ".model", "explicit slats in a cylinder" + not_yet + " (ergun and morison screens are)");
+    if (!sc.plane_y && sc.from.x != sc.to.x)
+      fail(key + ".from", "a screen in a cylinder is a vertical plane: give 'x' (the plane x = const) or 'y' (y = "
+                          "const), or 'from' and 'to' with the same x");
+    const double R = s.tank.radius, plane = sc.plane_y ? *sc.plane_y : sc.from.x;
+    if (!(std::abs(plane - R) < R - s.particles.dp))
+      fail(key + (sc.plane_y ? ".y" : sc.full_height ? ".x" : ".from"), "the screen's plane must cut the cylinder at least dp inside its wall: "
+                                             "|" + std::string(sc.plane_y ? "y" : "x") + " - radius| < radius - dp "
+                                             "(the axis stands at x = y = radius)");
   }
   if (!s.plates.empty()) fail("plates", "an elastic plate" + not_yet);
   if (s.tank.breadth < 4.0 * s.particles.dp)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/geometry/screens.hpp"
@@ -117,8 +118,23 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
   return out;
 }
 
+namespace {
+
+// The interval [from, to] along which a 3D element is repeated (extrude_screen_particles): y over
+// the breadth, x over the length in the plane y = plane_y; in a cylinder the chord of that plane.
+std::pair<double, double> extrusion_interval(const ScreenElement& e, double breadth, double length,
+                                             double cylinder_radius) {
+  if (cylinder_radius <= 0.0) return {0.0, e.plane_y ? length : breadth};
+  const double R = cylinder_radius, plane = e.plane_y ? *e.plane_y : e.from.x;
+  const double w = std::sqrt(std::max(0.0, R * R - (plane - R) * (plane - R)));
+  return {R - w, R + w};
+}
+
+}  // namespace
+
 BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp,
-                                                 const std::vector<ScreenSpec>& specs, double length) {
+                                                 const std::vector<ScreenSpec>& specs, double length,
+                                                 double cylinder_radius) {
   BasicScreenParticles<3> out;
   out.wet_fraction = section.wet_fraction;
   for (std::size_t index = 0; index < section.elements.size(); ++index) {
@@ -127,7 +143,8 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
     e.first = out.position.size();
     if (index < specs.size()) e.plane_y = specs[index].plane_y;
     if (count > 0) {
-      const double extent = e.plane_y ? length : breadth;  // along which the element is repeated
+      const auto [start, end] = extrusion_interval(e, breadth, length, cylinder_radius);
+      const double extent = end - start;  // along which the element is repeated
       e.count_across = std::max<std::size_t>(
           1, static_cast<std::size_t>(std::ceil(extent / e.nominal_spacing - 1e-9)));
       e.spacing_across = extent / static_cast<double>(e.count_across);
@@ -136,7 +153,7 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
       for (std::size_t k = first; k < first + count; ++k)
         for (std::size_t m = 0; m < e.count_across; ++m) {
           const Vec2 q = section.position[k];
-          const double along = (static_cast<double>(m) + 0.5) * e.spacing_across;
+          const double along = start + (static_cast<double>(m) + 0.5) * e.spacing_across;
           out.position.push_back(e.plane_y ? Vec3{along, *e.plane_y, q.y} : Vec3{q.x, along, q.y});
           out.element.push_back(static_cast<std::uint32_t>(index));
         }

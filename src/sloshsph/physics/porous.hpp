@@ -140,19 +140,28 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
 // element; the undisturbed weight is the cubic lattice's sum. An element whose spec has plane_y
 // (specs[k], empty specs: none) is the section's vertical column repeated along the length instead,
 // at x = (m + 1/2) length / n, n = ceil(length / dp_sc), in the plane y = plane_y.
+// In an upright cylinder (cylinder_radius R > 0, axis at (R, R), breadth = length = 2R) a vertical
+// element is repeated over the chord its plane cuts from the circle instead: |y - R| <= w (or
+// |x - R| <= w in the plane y = plane_y), w = sqrt(R^2 - (c - R)^2), c the plane's x (or y), on rows
+// at R - w + (m + 1/2) 2w / n, n = ceil(2w / dp_sc).
 BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section, double breadth, double dp,
-                                                 const std::vector<ScreenSpec>& specs = {}, double length = 0.0);
+                                                 const std::vector<ScreenSpec>& specs = {}, double length = 0.0,
+                                                 double cylinder_radius = 0.0);
 
-// The screen particles of a scene's screens in D dimensions (3D: extruded over `breadth`).
+// The screen particles of a scene's screens in D dimensions (3D: extruded over `breadth`, or over
+// the chords of an upright cylinder of radius cylinder_radius > 0, whose section `tank` is the
+// rectangle 2R wide it stands in).
 template <int D>
 BasicScreenParticles<D> make_screen_particles_in(const std::vector<ScreenSpec>& specs, double dp, double h,
-                                                 const TankGeometry& tank, double breadth, const std::string& where) {
+                                                 const TankGeometry& tank, double breadth, const std::string& where,
+                                                 double cylinder_radius = 0.0) {
   ScreenParticles section = make_screen_particles(specs, dp, h, tank, where);
   if constexpr (D == 2) {
     (void)breadth;
+    (void)cylinder_radius;
     return section;
   } else {
-    return extrude_screen_particles(section, breadth, dp, specs, tank.x_max - tank.x_min);
+    return extrude_screen_particles(section, breadth, dp, specs, tank.x_max - tank.x_min, cylinder_radius);
   }
 }
 

@@ -104,7 +104,7 @@ BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start)
       base_y_(spec.excitation_y ? BaseMotionSource(*spec.excitation_y, spec.time.end) : BaseMotionSource()),
       scheme_(spec, scene_.h),
       screens_(make_screen_particles_in<D>(scene_.screens, spec.particles.dp, scene_.h, *scene_.tank, scene_.breadth,
-                                           spec.source)),
+                                           spec.source, spec.tank.shape == "cylinder" ? spec.tank.radius : 0.0)),
       pair_contact_(spec.particles.dp) {
   acc_screen_force_.assign(screens_.elements.size(), Vec<D>{});
   screen_loads_.assign(screens_.elements.size(), BasicScreenElementLoad<D>{});

@@ -556,9 +556,19 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
                              "case.toml", {})
                   .screens.at(0)
                   .plane_y.has_value());
-  expect_error(read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml") +
-                   "\n[[screens]]\nname = \"s\"\nx = 0.15\nsolidity = 0.4\nmodel = \"morison\"\n",
-               {}, "screens.0", "cylinder");
+  // Screens in a cylinder (R = 0.15 m, dp = 10 mm): vertical planes x or y = const, ergun or morison,
+  // at least dp inside the wall (their particles: ScreenDrag.ScreenInACylinderSpansTheChordOfItsPlane).
+  const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
+  const auto with_screen = [&cylinder](const std::string& keys) {
+    return cylinder + "\n[[screens]]\nname = \"s\"\nsolidity = 0.4\n" + keys;
+  };
+  EXPECT_EQ(read_case_text(with_screen("x = 0.15\nmodel = \"morison\"\n"), "case.toml", {}).screens.size(), 1u);
+  EXPECT_TRUE(read_case_text(with_screen("y = 0.1\n"), "case.toml", {}).screens.at(0).plane_y.has_value());
+  expect_error(with_screen("x = 0.15\nmodel = \"explicit\"\nslat_height = 0.01\nslat_gap = 0.01\n"), {},
+               "screens.0.model", "cylinder");
+  expect_error(with_screen("from = [0.1, 0.0]\nto = [0.2, 0.3]\n"), {}, "screens.0.from", "vertical plane");
+  expect_error(with_screen("x = 0.005\n"), {}, "screens.0.x", "at least dp inside");
+  expect_error(with_screen("y = 0.295\n"), {}, "screens.0.y", "at least dp inside");
   // In 3D a gauge needs its y, and a probe its z.
   expect_error(box + "\n[[probes.gauge]]\nname = \"h\"\nx = 0.1\n", {}, "probes.gauge.3.y", "");
   expect_error(box + "\n[[probes.pressure]]\nname = \"q\"\nx = 0.1\ny = 0.1\n", {}, "probes.pressure.2.z", "");
