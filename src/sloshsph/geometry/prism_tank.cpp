@@ -43,9 +43,13 @@ std::vector<WallSample3> extrude_inside(const std::vector<WallSample>& section_w
 }
 
 std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth) {
+  return on_planes_across(tank, dp, fill_fluid(tank.section, dp, depth));
+}
+
+std::vector<Vec3> on_planes_across(const PrismTank& tank, double dp, const std::vector<Vec2>& section_points) {
   std::vector<Vec3> out;
   const int n_y = planes_across(tank, dp);
-  for (const Vec2& q : fill_fluid(tank.section, dp, depth))
+  for (const Vec2& q : section_points)
     for (int k = 0; k < n_y; ++k) out.push_back(at_breadth(q, (k + 0.5) * dp));
   return out;
 }

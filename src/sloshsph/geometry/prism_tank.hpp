@@ -67,6 +67,10 @@ std::vector<WallSample3> extrude_inside(const std::vector<WallSample>& section_w
 // the wall) at y = (k + 1/2) dp, k = 0 .. n_y - 1.
 std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth);
 
+// Points of the section (x, height) on the fill's lattice planes across the breadth, y = (k + 1/2)
+// dp, k = 0 .. n_y - 1, point by point (3D fill blocks: the section's block fill over the breadth).
+std::vector<Vec3> on_planes_across(const PrismTank& tank, double dp, const std::vector<Vec2>& section_points);
+
 // Particles at rest from a fill and its wall samples (WallSample or WallSample3), in 2 or 3
 // dimensions: the fluid first, in fill order, then the walls; volume dp^D, mass rho dp^D, the
 // hydrostatic pressure rho g (level - height) below the still level (walls too, 0 above it; the

@@ -266,7 +266,9 @@ Scene3 build_scene3(const CaseSpec& spec) {
   const PrismTank prism{*tank, spec.tank.breadth};
   check_probes_3d(spec, [&prism](Vec3 p) { return prism.signed_distance(p); }, tank->y_top);
   const double dp = spec.particles.dp;
-  std::vector<Vec3> fluid = fill_fluid(prism, dp, spec.fill.depth);
+  const std::vector<FluidBlock>& blocks = spec.fill.blocks;  // each over the whole breadth
+  std::vector<Vec3> fluid = blocks.empty() ? fill_fluid(prism, dp, spec.fill.depth)
+                                           : on_planes_across(prism, dp, fill_blocks(*tank, dp, blocks));
   std::vector<WallSample3> walls = sample_walls(prism, dp, spec.particles.wall_layers);
   // Screens: ergun and morison elements are extruded over the breadth by the driver
   // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it, or,
@@ -295,7 +297,14 @@ Scene3 build_scene3(const CaseSpec& spec) {
     fluid.swap(kept);
   }
   Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
-  add_fill_warning(spec, *tank, fill_fluid(*tank, dp, spec.fill.depth).size(), scene.warnings);
+  if (blocks.empty()) {
+    add_fill_warning(spec, *tank, fill_fluid(*tank, dp, spec.fill.depth).size(), scene.warnings);
+  } else {  // each particle at the hydrostatic pressure below the top of its block, as in 2D
+    Particles3& p = scene.particles;
+    const double rho_g = spec.fluid.density * spec.fluid.gravity;
+    for (std::size_t i = 0; i < p.n_fluid; ++i)
+      p.pressure[i] = rho_g * (block_surface(blocks, in_section(p.position[i])) - p.position[i].z);
+  }
   add_breadth_warning(spec, scene.warnings);
   scene.screens = std::move(screens);
   scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());

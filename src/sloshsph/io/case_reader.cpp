@@ -689,8 +689,6 @@ void check_dimensions(const CaseSpec& s) {
                               "porous screens across the breadth, gauges and point pressure probes";
   if (s.excitation.type == ExcitationType::pitch && (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0))
     fail("excitation.direction", "is the direction of a translation; a rotation turns about 'axis'");
-  if (!s.fill.blocks.empty()) fail("fill.blocks", "fill blocks" + not_yet);
-  if (!s.fronts.empty()) fail("probes.front", "the surge-front probe" + not_yet);
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
     const std::string key = "screens." + std::to_string(k);
     const ScreenSpec& sc = s.screens[k];
@@ -723,6 +721,10 @@ void check_dimensions(const CaseSpec& s) {
 void resolve_fill(CaseSpec& s) {
   FillSpec& f = s.fill;
   if (f.blocks.empty()) return;
+  if (s.tank.shape == "cylinder")  // 3D: a block is its section's rectangle over a prism's breadth
+    throw InputError(s.where("fill.blocks"), "fill.blocks",
+                     "fill blocks in a cylinder are not available yet (issue 31); in a 3D box or prism a block is the "
+                     "rectangle of the section (x, height) over the whole breadth");
   check_particle_estimate(s);
   const TankGeometry tank = make_tank(s.tank, s.where("tank.shape"));
   const double dp = s.particles.dp;

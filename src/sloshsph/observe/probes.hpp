@@ -100,12 +100,14 @@ double pressure_on_face(const K& k, const Particles& p, const CellGrid& grid, Ve
 }
 
 // Surge front (dam-break tip): the largest (rightward) or smallest x of the fluid particles at
-// most `band` above y_floor, moved dp/2 outward (the edge of that particle's own volume).
+// most `band` above y_floor, moved dp/2 outward (the edge of that particle's own volume). The
+// height is y in 2D and z in 3D (where the front is the furthest particle across the breadth).
 // Returns NaN when no fluid particle lies in the band.
-inline double front_position(const Particles& p, double y_floor, double band, bool rightward, double dp) {
+template <int D>
+double front_position(const BasicParticles<D>& p, double y_floor, double band, bool rightward, double dp) {
   double edge = rightward ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < p.n_fluid; ++j) {
-    if (p.position[j].y - y_floor > band) continue;
+    if (component(p.position[j], D - 1) - y_floor > band) continue;
     edge = rightward ? std::max(edge, p.position[j].x) : std::min(edge, p.position[j].x);
   }
   if (!std::isfinite(edge)) return std::numeric_limits<double>::quiet_NaN();

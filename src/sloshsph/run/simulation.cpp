@@ -228,14 +228,13 @@ void BasicSimulation<D>::build_columns() {
     add_column("eta:" + spec_.gauges[k].name, "m", [k](S s, B) { return s.surface_height(k) - s.gauge_datum_[k]; });
   for (std::size_t k = 0; k < spec_.pressure_probes.size(); ++k)
     add_column("p:" + spec_.pressure_probes[k].name, "Pa", [k](S, B b) { return b.probe_pressure[k]; });
-  if constexpr (D == 2) {
-    for (std::size_t k = 0; k < spec_.fronts.size(); ++k)
-      add_column("front:" + spec_.fronts[k].name, "m", [k](S s, B) {
-        const FrontProbeSpec& f = s.spec_.fronts[k];
-        const double dp = s.spec_.particles.dp;
-        return front_position(s.scene_.particles, s.scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp, f.rightward, dp);
-      });
-  }
+  for (std::size_t k = 0; k < spec_.fronts.size(); ++k)
+    add_column("front:" + spec_.fronts[k].name, "m", [k](S s, B) {
+      const FrontProbeSpec& f = s.spec_.fronts[k];
+      const double dp = s.spec_.particles.dp;
+      return front_position<D>(s.scene_.particles, s.scene_.tank->y_bottom, f.band > 0.0 ? f.band : 2.0 * dp,
+                               f.rightward, dp);
+    });
   for (std::size_t e = 0; e < screens_.elements.size(); ++e) {
     if (screens_.elements[e].count == 0) continue;  // explicit slats are walls: their force is in F_w
     auto mean_force = [e](S s) { return s.acc_dt_ > 0.0 ? s.acc_screen_force_[e] / s.acc_dt_ : Vec<D>{}; };

@@ -556,6 +556,15 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
                              "case.toml", {})
                   .screens.at(0)
                   .plane_y.has_value());
+  // Fill blocks in 3D: the section's rectangle over a box's or prism's breadth (settled depth from
+  // the section's area, as in 2D); not in a cylinder. The front probe reads in 3D.
+  const CaseSpec blocks = read_case_text(box + "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.2]\n"
+                                               "[[probes.front]]\nname = \"tip\"\n", "case.toml", {});
+  EXPECT_EQ(blocks.fill.blocks.size(), 1u);
+  EXPECT_EQ(blocks.fronts.size(), 1u);
+  expect_error(read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml") +
+                   "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.1]\n",
+               {}, "fill.blocks", "cylinder");
   // Screens in a cylinder (R = 0.15 m, dp = 10 mm): vertical planes x or y = const, ergun or morison,
   // at least dp inside the wall (their particles: ScreenDrag.ScreenInACylinderSpansTheChordOfItsPlane).
   const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
