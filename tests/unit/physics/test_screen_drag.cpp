@@ -431,5 +431,29 @@ TEST(ScreenDrag, ScreenInACylinderSpansTheChordOfItsPlane) {
   }
 }
 
+// A perforated floor in 3D (issue 31): the section's horizontal element (x from 0.4 to 0.6 m at
+// z = 0.5003 m) extruded over a breadth of 0.1 m, in a uniform upward flow. Reference: the force
+// -(dP/L)(u) t_sc L B along z (eq. 2.24 times the breadth) within 2%, as the vertical screens above;
+// a Morison floor does not resist a flow along x (exactly 0).
+TEST(ScreenDrag, ExtrudedPerforatedFloorInThreeDimensions) {
+  const double dp = 0.02, h = 1.4 * dp, breadth = 0.1;
+  const BasicScreenParticles<3> sp = extrude_screen_particles(
+      make_screen_particles({screen({0.4, 0.5003}, {0.6, 0.5003}, ScreenModel::ergun, 0.42)}, dp, h, big_tank(), "t"),
+      breadth, dp);
+  const ScreenElement& e = sp.elements[0];
+  EXPECT_EQ(e.count_across, 5u);
+  for (const Vec3& q : sp.position) EXPECT_EQ(q.z, 0.5003);
+  const Vec3 u{0.0, 0.0, 0.1};
+  const UniformFlowDrag d = drag_in_uniform_flow(sp, {0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, u);
+  const double expected = -ergun_pressure_gradient<3>(kMu, kRho, e.permeability, e.porosity, u).z * 0.001 * 0.2 * breadth;
+  EXPECT_NEAR(d.load.force_on_fluid.z, expected, 0.02 * std::abs(expected));
+  EXPECT_NEAR(d.load.force_on_fluid.x, 0.0, 1e-12 * std::abs(expected));
+  const BasicScreenParticles<3> morison = extrude_screen_particles(
+      make_screen_particles({screen({0.4, 0.5003}, {0.6, 0.5003}, ScreenModel::morison, 0.42)}, dp, h, big_tank(), "t"),
+      breadth, dp);
+  EXPECT_EQ(norm(drag_in_uniform_flow(morison, {0.2, -0.2, 0.2}, {0.8, 0.3, 0.8}, dp, {0.1, 0.0, 0.0}).load.force_on_fluid),
+            0.0);
+}
+
 }  // namespace
 }  // namespace sloshsph
