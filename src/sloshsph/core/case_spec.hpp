@@ -310,6 +310,10 @@ struct OutputSpec {
   bool snapshot_walls = true;       // include wall particles in snapshots
   int response_cycles = 10;         // steady-state averages over the last N excitation cycles
   double lowpass_hz = 5.0;          // zero-phase low-pass of the response series (0: none)
+  // m, the point the moment columns (M_w; 3D M_wx, M_wy, M_wz) are taken about, in the tank frame:
+  // 2D (x, y) with z = 0, 3D (x, y, z). None: the centre of the tank's bottom (resolved cases write
+  // it only when it was given, so older cases keep their case.toml).
+  std::optional<Vec3> moment_point;
 };
 
 struct RunSpec {

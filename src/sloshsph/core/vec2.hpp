@@ -108,4 +108,9 @@ inline constexpr Vec3 cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
+// A moment r x F in D dimensions: in 2D the scalar about the out-of-plane axis (counter-clockwise
+// in the x-y plane positive), in 3D the vector.
+template <int D>
+using Moment = decltype(cross(Vec<D>{}, Vec<D>{}));
+
 }  // namespace sloshsph

@@ -563,8 +563,18 @@ StructureSpec read_structure(TableReader& r, std::optional<StructureSpec>& sway_
   return s;
 }
 
-OutputSpec read_output(TableReader& r) {
+OutputSpec read_output(TableReader& r, int dimensions) {
   OutputSpec o;
+  if (r.has("moment_point")) {
+    if (dimensions == 3) {
+      o.moment_point = r.optional_point3("moment_point");
+      if (!o.moment_point) r.fail("moment_point", "is the point [x, y, z] the moments are taken about (m)");
+    } else {
+      const std::optional<Vec2> q = r.optional_point("moment_point");
+      if (!q) r.fail("moment_point", "is the point [x, y] the moments are taken about (m)");
+      o.moment_point = Vec3{q->x, q->y, 0.0};
+    }
+  }
   o.sample_interval = r.positive("sample_interval", o.sample_interval);
   o.snapshot_interval = r.non_negative("snapshot_interval", o.snapshot_interval);
   o.snapshot_walls = r.boolean("snapshot_walls", o.snapshot_walls);
@@ -869,7 +879,7 @@ CaseSpec read_root(toml::table& root, const std::string& source, const std::vect
   read_screens(r, spec);
   read_plates(r, spec);
   section(r, "structure", false, [&](TableReader& t) { spec.structure = read_structure(t, spec.structure_y); });
-  section(r, "output", false, [&](TableReader& t) { spec.output = read_output(t); });
+  section(r, "output", false, [&](TableReader& t) { spec.output = read_output(t, spec.tank.dimensions); });
   section(r, "run", false, [&](TableReader& t) { spec.run = read_run(t); });
   r.finish();
   spec.locations = context->locations;
@@ -1264,11 +1274,14 @@ std::string resolved_case_toml(const CaseSpec& s) {
   }
   if (!plates.empty()) root.insert("plates", plates);
   if (s.structure) root.insert("structure", structure_table(s));
-  root.insert("output", toml::table{{"sample_interval", s.output.sample_interval},
-                                    {"snapshot_interval", s.output.snapshot_interval},
-                                    {"snapshot_walls", s.output.snapshot_walls},
-                                    {"response_cycles", s.output.response_cycles},
-                                    {"lowpass_hz", s.output.lowpass_hz}});
+  toml::table output{{"sample_interval", s.output.sample_interval},
+                     {"snapshot_interval", s.output.snapshot_interval},
+                     {"snapshot_walls", s.output.snapshot_walls},
+                     {"response_cycles", s.output.response_cycles},
+                     {"lowpass_hz", s.output.lowpass_hz}};
+  if (const std::optional<Vec3>& m = s.output.moment_point)
+    output.insert("moment_point", three_d ? toml::array{m->x, m->y, m->z} : toml::array{m->x, m->y});
+  root.insert("output", output);
   root.insert("run", toml::table{{"max_leaked_fraction", s.run.max_leaked_fraction},
                                  {"max_speed_factor", s.run.max_speed_factor}});
   std::ostringstream out;

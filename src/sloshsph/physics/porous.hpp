@@ -211,6 +211,16 @@ using ScreenDragWork = BasicScreenDragWork<2>;
 // (m/s^2), loads_out to the number of elements.
 // In 3D the same with the 3D kernel, the normal (n_x, 0, n_z) of the extruded element and the
 // area A_p = spacing x spacing_across.
+// The moment about the origin of the screens' drag on the fluid in the last screen_drag call that
+// used `work`: -sum_j r_j x F_d,j, the drag of screen particle j acting on the fluid around it (eq.
+// 2.28 spreads it over its kernel). In particle order (deterministic).
+template <int D>
+Moment<D> screen_moment_on_fluid(const BasicScreenParticles<D>& screens, const BasicScreenDragWork<D>& work) {
+  Moment<D> m{};
+  for (std::size_t j = 0; j < screens.size() && j < work.drag.size(); ++j) m -= cross(screens.position[j], work.drag[j]);
+  return m;
+}
+
 template <int D>
 void screen_drag(const BasicScreenParticles<D>& screens, const BasicParticles<D>& p,
                  const std::vector<Vec<D>>& velocity, double rho, double mu, BasicScreenDragWork<D>& work,

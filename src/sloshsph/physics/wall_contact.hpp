@@ -35,6 +35,7 @@ template <int D>
 struct BasicWallContact {
   std::size_t corrected = 0;  // particles whose velocity or position was corrected
   Vec<D> force_on_fluid;      // N/m (N in 3D), the momentum the walls took out of the fluid, per dt
+  Moment<D> moment_on_fluid{};  // its moment about the origin (each correction at its particle)
 };
 using WallContact = BasicWallContact<2>;
 
@@ -82,7 +83,9 @@ BasicWallContact<D> keep_fluid_in_container(BasicParticles<D>& p, const SampledD
     if (approach >= 0.0 && d >= 0.0) continue;  // close, but leaving: nothing to do
     if (approach < 0.0) {
       p.velocity[i] -= approach * n;
-      out.force_on_fluid -= (p.mass * approach / dt) * n;
+      const Vec<D> taken = (p.mass * approach / dt) * n;
+      out.force_on_fluid -= taken;
+      out.moment_on_fluid -= cross(p.position[i], taken);
     }
     if (d < 0.0) p.position[i] += (0.5 * contact - d) * n;
     ++out.corrected;

@@ -95,6 +95,20 @@ CaseSpec resolve_case(CaseSpec spec) {
 
 // A function-try-block: the checks made while the scene and the excitation are built (fill
 // depth, screen geometry, noise band, ...) name their key; here they get the case file and line.
+// output.moment_point, or the centre of the tank's bottom: the middle of its length at its lowest
+// point, and in 3D the middle of the breadth (a cylinder's axis at the bottom).
+template <int D>
+Vec<D> moment_point_of(const CaseSpec& spec, const TankGeometry& section) {
+  const double x = 0.5 * (section.x_min + section.x_max);
+  if constexpr (D == 2) {
+    if (const std::optional<Vec3>& m = spec.output.moment_point) return {m->x, m->y};
+    return {x, section.y_bottom};
+  } else {
+    if (const std::optional<Vec3>& m = spec.output.moment_point) return *m;
+    return {x, 0.5 * spec.tank.breadth, section.y_bottom};
+  }
+}
+
 template <int D>
 BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start) try
     : spec_(spec),
@@ -107,6 +121,7 @@ BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start)
                                            spec.source, spec.tank.shape == "cylinder" ? spec.tank.radius : 0.0)),
       pair_contact_(spec.particles.dp) {
   acc_screen_force_.assign(screens_.elements.size(), Vec<D>{});
+  moment_point_ = moment_point_of<D>(spec_, *scene_.tank);
   screen_loads_.assign(screens_.elements.size(), BasicScreenElementLoad<D>{});
   linear_omega_ = first_sloshing_omega(spec_);  // may throw InputError: before any output exists
   speed_limit_ = spec_.run.max_speed_factor * fill_speed_scale(spec_.fill, spec_.fluid.gravity);
@@ -255,6 +270,16 @@ void BasicSimulation<D>::build_columns() {
     add_column("F_wy", "N", [](S, B b) { return b.wall_force.y; });
     add_column("F_sw_y", "N", [](S, B b) { return b.wall_force.y - b.fluid_mass * b.base_acceleration_y; });
     add_column("F_wz", "N", [](S, B b) { return b.wall_force.z; });
+  }
+  // The moment of that force about output.moment_point (the walls' and screens' on the fluid, as
+  // F_w; the fluid's on the tank is its negative): M_P = M_0 - P x F.
+  auto moment = [](S s, B b) { return b.wall_moment - cross(s.moment_point_, b.wall_force); };
+  if constexpr (D == 2) {
+    add_column("M_w", "N m/m", [moment](S s, B b) { return moment(s, b); });
+  } else {
+    add_column("M_wx", "N m", [moment](S s, B b) { return moment(s, b).x; });
+    add_column("M_wy", "N m", [moment](S s, B b) { return moment(s, b).y; });
+    add_column("M_wz", "N m", [moment](S s, B b) { return moment(s, b).z; });
   }
   add_column("W_base", energy_unit, [](S s, B) { return s.work_on_fluid_; });
   add_column("fluid_mass", D == 2 ? "kg/m" : "kg", [](S, B b) { return b.fluid_mass; });
@@ -434,13 +459,16 @@ void BasicSimulation<D>::step() {
   if (structure_y_) after.displacement_y += structure_y_->displacement();
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
   Vec<D> wall_force = scheme_.diagnostics().wall_force;
+  Moment<D> wall_moment = scheme_.diagnostics().wall_moment;
   if (spec_.scheme.pair_contact)  // before the wall contact, which then has the last word at the walls
     pair_contacts_ += pair_contact_.apply(scene_.particles, scheme_.neighbours());
   if (spec_.scheme.wall_contact) {
     const BasicWallContact<D> contact = wall_contact(dt);
     wall_contacts_ += contact.corrected;
     wall_force += contact.force_on_fluid;
+    wall_moment += contact.moment_on_fluid;
   }
+  if (!screens_.position.empty()) wall_moment += screen_moment_on_fluid(screens_, screen_work_);
   for (std::size_t e = 0; e < screen_loads_.size(); ++e) {
     wall_force += screen_loads_[e].force_on_fluid;
     acc_screen_force_[e] += dt * screen_loads_[e].force_on_fluid;
@@ -459,6 +487,7 @@ void BasicSimulation<D>::step() {
   shifts_limited_ += scheme_.diagnostics().shifts_limited;
   acc_dt_ += dt;
   acc_wall_force_ += dt * wall_force;
+  acc_wall_moment_ += dt * wall_moment;
   acc_base_acceleration_ += dt * mid.acceleration.x;
   if constexpr (D == 2) {
     work_on_fluid_ += wall_force.x * (after.displacement.x - before.displacement.x);
@@ -593,6 +622,7 @@ typename BasicSimulation<D>::SampleBasis BasicSimulation<D>::sample_basis() {
   b.fluid_mass = fluid_mass();
   if (acc_dt_ > 0.0) {
     b.wall_force = acc_wall_force_ / acc_dt_;
+    b.wall_moment = acc_wall_moment_ / acc_dt_;
     b.base_acceleration = acc_base_acceleration_ / acc_dt_;
     b.base_acceleration_y = acc_base_acceleration_y_ / acc_dt_;
   }
@@ -609,6 +639,7 @@ template <int D>
 void BasicSimulation<D>::reset_interval_sums() {
   acc_dt_ = 0.0;
   acc_wall_force_ = {};
+  acc_wall_moment_ = {};
   acc_base_acceleration_ = 0.0;
   acc_base_acceleration_y_ = 0.0;
   acc_tld_force_ = 0.0;
@@ -671,6 +702,7 @@ void BasicSimulation<D>::save_state(StateWriter& w) const {
     w.value("sim.shifts_limited", static_cast<std::uint64_t>(shifts_limited_));
   w.value("sim.acc_dt", acc_dt_);
   w.value("sim.acc_wall_force", acc_wall_force_);
+  w.value("sim.acc_wall_moment", acc_wall_moment_);
   w.value("sim.acc_base_acceleration", acc_base_acceleration_);
   w.value("sim.work_on_fluid", work_on_fluid_);
   w.array("sim.acc_screen_force", acc_screen_force_);
@@ -710,6 +742,8 @@ void BasicSimulation<D>::load_state(StateReader& r) {
     shifts_limited_ = static_cast<std::size_t>(r.value<std::uint64_t>("sim.shifts_limited"));
   acc_dt_ = r.value<double>("sim.acc_dt");
   acc_wall_force_ = r.value<Vec<D>>("sim.acc_wall_force");
+  if (r.next_is("sim.acc_wall_moment"))  // a checkpoint from before the moment columns has none
+    acc_wall_moment_ = r.value<Moment<D>>("sim.acc_wall_moment");
   acc_base_acceleration_ = r.value<double>("sim.acc_base_acceleration");
   work_on_fluid_ = r.value<double>("sim.work_on_fluid");
   acc_screen_force_ = r.array<Vec<D>>("sim.acc_screen_force");

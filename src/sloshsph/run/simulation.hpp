@@ -45,6 +45,7 @@ struct BasicSampleBasis {
   BaseMotion motion;               // in 3D in tank axes (physics/excitation.hpp, in_tank_axes)
   double fluid_mass = 0.0;         // kg/m
   Vec<D> wall_force;               // N/m, interval mean of the walls' (and screens') force on the fluid
+  Moment<D> wall_moment{};         // N m/m (N m), its moment about the origin, interval mean
   double base_acceleration = 0.0;    // m/s^2, interval mean of the frame's acceleration along x
   double base_acceleration_y = 0.0;  // m/s^2, the same along y (3D)
   double kinetic_energy = 0.0, potential_energy = 0.0;  // of the fluid, tank frame
@@ -196,6 +197,8 @@ class BasicSimulation {
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;
   Vec<D> acc_wall_force_;
+  Moment<D> acc_wall_moment_{};  // about the tank frame's origin
+  Vec<D> moment_point_;          // output.moment_point (default: the centre of the tank's bottom)
   double acc_base_acceleration_ = 0.0, acc_base_acceleration_y_ = 0.0;  // along x and (3D) y
   double work_on_fluid_ = 0.0;  // J/m, integral of F_w dX since t = 0
   // [structure] (thesis 4.2.3): the SDOF carrying the tank, the sloshing force of the last

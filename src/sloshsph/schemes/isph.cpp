@@ -709,14 +709,17 @@ void BasicIsphScheme<D>::step(ParticleSet& p, const Input& in) {
 
   // Diagnostics, reduced in a fixed order so they do not depend on the thread count.
   Vec<D> wall{};
+  Moment<D> moment{};
   double vmax2 = 0.0;
   std::size_t surface = 0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) {
     wall += d.wall_acceleration[i];
+    moment += cross(d.position_star[i], d.wall_acceleration[i]);  // the pressure part acted at r*
     vmax2 = std::max(vmax2, norm2(p.velocity[i]));
     surface += d.free_surface[i] > 0 ? 1 : 0;
   }
   diagnostics_.wall_force = wall * p.mass;
+  diagnostics_.wall_moment = moment * p.mass;
   diagnostics_.max_speed = std::sqrt(vmax2);
   diagnostics_.free_surface = surface;
 }

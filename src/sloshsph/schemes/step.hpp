@@ -29,6 +29,10 @@ using StepInput = BasicStepInput<2>;
 template <int D>
 struct BasicStepDiagnostics {
   Vec<D> wall_force;             // N/m (N in 3D): total force of the walls on the fluid (base shear, thesis eq. 4.21)
+  // N m/m (N m in 3D): the moment of that force about the tank frame's origin, sum_i r_i x m a_wall,i
+  // with r_i where the force on fluid particle i was evaluated (the pair forces of the walls' pressure
+  // act along r_ij, so taking them at the fluid particle instead of the wall particle changes nothing).
+  Moment<D> wall_moment{};
   double max_speed = 0.0;        // m/s, fluid, after the step
   std::size_t free_surface = 0;  // particles flagged free surface this step
   int solver_iterations = 0;     // implicit PPE (explicit: sweeps)

@@ -423,9 +423,14 @@ void BasicWcsphScheme<D>::evaluate(ParticleSet& p, const Frame& frame) {
   t.repulsive = spec_.walls == WallTreatment::repulsive;
   rates(p, d.pairs, t, repulsive_, d);
 
-  Vec<D> wall;  // fixed-order sum: independent of the thread count
-  for (std::size_t i = 0; i < nf; ++i) wall += d.wall_acceleration[i];
+  Vec<D> wall;  // fixed-order sums: independent of the thread count
+  Moment<D> moment{};
+  for (std::size_t i = 0; i < nf; ++i) {
+    wall += d.wall_acceleration[i];
+    moment += cross(p.position[i], d.wall_acceleration[i]);
+  }
   last_wall_force_ = wall * p.mass;
+  last_wall_moment_ = moment * p.mass;
 }
 
 template <int D>
@@ -481,6 +486,7 @@ void BasicWcsphScheme<D>::step_symplectic(ParticleSet& p, const Input& in) {
     p.position[i] += 0.5 * dt * u + dt * d.xsph[i];
   }
   diagnostics_.wall_force = last_wall_force_;
+  diagnostics_.wall_moment = last_wall_moment_;
 }
 
 // Leap-frog (Dincer 2019 sec. 2.1) in its kick-drift-kick (velocity Verlet) form:
@@ -508,6 +514,7 @@ void BasicWcsphScheme<D>::step_leapfrog(ParticleSet& p, const Input& in) {
     p.density[i] = rho_half + 0.5 * dt * d.density_rate[i];
   }
   const Vec<D> wall_before = last_wall_force_;
+  const Moment<D> moment_before = last_wall_moment_;
   evaluate(p, in.frame);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < nf; ++i) {
@@ -516,6 +523,7 @@ void BasicWcsphScheme<D>::step_leapfrog(ParticleSet& p, const Input& in) {
     p.density[i] = d.density_start[i] + 0.5 * dt * d.density_rate[i];
   }
   diagnostics_.wall_force = 0.5 * (wall_before + last_wall_force_);
+  diagnostics_.wall_moment = 0.5 * (moment_before + last_wall_moment_);
 }
 
 // Pressures of the new densities, the Shepard re-normalisation when due (Shao eqs. 10-11,
@@ -619,6 +627,7 @@ void BasicWcsphScheme<D>::save_state(StateWriter& w) const {
   w.array("wcsph.position_at_build", data_.position_at_build);
   w.value("wcsph.max_eddy_viscosity", max_eddy_viscosity_);
   w.value("wcsph.last_wall_force", last_wall_force_);
+  w.value("wcsph.last_wall_moment", last_wall_moment_);
   w.value("wcsph.steps", steps_);
   neighbours_.save(w);
 }
@@ -632,6 +641,8 @@ void BasicWcsphScheme<D>::load_state(StateReader& r) {
   data_.position_at_build = r.array<Vec<D>>("wcsph.position_at_build");
   max_eddy_viscosity_ = r.value<double>("wcsph.max_eddy_viscosity");
   last_wall_force_ = r.value<Vec<D>>("wcsph.last_wall_force");
+  if (r.next_is("wcsph.last_wall_moment"))  // a checkpoint from before the moment column has none
+    last_wall_moment_ = r.value<Moment<D>>("wcsph.last_wall_moment");
   steps_ = r.value<long>("wcsph.steps");
   neighbours_.load(r);
 }

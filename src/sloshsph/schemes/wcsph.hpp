@@ -135,6 +135,7 @@ class BasicWcsphScheme {
   double ct_;          // SPS constant C_t (SchemeSpec::ct)
   double max_eddy_viscosity_ = 0.0;
   Vec<D> last_wall_force_;   // leap-frog: wall force of the last evaluation
+  Moment<D> last_wall_moment_{};  // and its moment about the origin
   long steps_ = 0;
   TankSpec tank_;
   std::string tank_where_;
