@@ -37,15 +37,33 @@ std::vector<WallSample3> sample_walls(const CylinderTank& tank, double dp, int l
 }
 
 std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth) {
-  std::vector<Vec3> out;
+  // One layer of the lattice inside r <= R - dp/2, nearest the axis first (ties in lattice order).
   const int n = lattice_lines(tank, dp);
-  for (int k = 0; (k + 0.5) * dp < depth; ++k)  // the rows of the sections' fill
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const Vec3 q{(i + 0.5) * dp, (j + 0.5) * dp, (k + 0.5) * dp};
-        if (tank.from_axis(q) <= tank.radius - 0.5 * dp * (1.0 - 1e-9)) out.push_back(q);
-      }
+  std::vector<Vec2> layer;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec2 q{(i + 0.5) * dp, (j + 0.5) * dp};
+      if (norm(q - tank.axis()) <= tank.radius - 0.5 * dp * (1.0 - 1e-9)) layer.push_back(q);
+    }
+  std::stable_sort(layer.begin(), layer.end(),
+                   [&tank](Vec2 a, Vec2 b) { return norm2(a - tank.axis()) < norm2(b - tank.axis()); });
+  const std::size_t wanted = cylinder_fill_count(tank, dp, depth);
+  std::vector<Vec3> out;
+  out.reserve(wanted);
+  for (int k = 0; out.size() < wanted && !layer.empty(); ++k)
+    for (std::size_t m = 0; m < layer.size() && out.size() < wanted; ++m)
+      out.push_back({layer[m].x, layer[m].y, (k + 0.5) * dp});
+  // Back in lattice order within each layer (the order the schemes' first cell sort starts from).
+  std::stable_sort(out.begin(), out.end(), [](const Vec3& a, const Vec3& b) {
+    if (a.z != b.z) return a.z < b.z;
+    if (a.y != b.y) return a.y < b.y;
+    return a.x < b.x;
+  });
   return out;
+}
+
+std::size_t cylinder_fill_count(const CylinderTank& tank, double dp, double depth) {
+  return static_cast<std::size_t>(std::llround(3.141592653589793 * tank.radius * tank.radius * depth / (dp * dp * dp)));
 }
 
 double cylinder_first_sloshing_omega(double radius, double depth, double gravity) {

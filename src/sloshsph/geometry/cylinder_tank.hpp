@@ -51,15 +51,20 @@ std::function<double(Vec<D>)> tank_signed_distance(const TankSpec& spec, const s
 //    with r < R; normal +z.
 std::vector<WallSample3> sample_walls(const CylinderTank& tank, double dp, int layers);
 
-// Fluid particles on the cubic lattice ((i + 1/2) dp, (j + 1/2) dp, (k + 1/2) dp) below `depth` (centres
-// below it, as in the sections' fill) and
-// at least dp/2 inside the side wall (r <= R - dp/2). When dp divides 2R the lattice is symmetric
-// about the axis.
+// Fluid particles on the cubic lattice ((i + 1/2) dp, (j + 1/2) dp, (k + 1/2) dp) at least dp/2 inside
+// the side wall (r <= R - dp/2), as many as hold the water of `depth` (cylinder_fill_count: their
+// volume n dp^3 is pi R^2 depth to half a particle): whole layers from the bottom, and of the last
+// one the points nearest the axis. The square lattice does not reach the round wall everywhere (a
+// ring of gaps about dp/2 to dp wide, some dp/R of the water), so the fill stands higher than
+// `depth` and settles to it, filling the ring (time.settle). When dp divides 2R the whole layers
+// are symmetric about the axis.
 std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth);
 
-// The level that `particles` of volume dp^3 settle to in the cylinder: their volume over pi R^2.
-// Below fill.depth: the square lattice does not reach the round wall everywhere (a ring of gaps
-// about dp/2 to dp wide), and the water fills that ring once it settles.
+// round(pi R^2 depth / dp^3): the particles of volume dp^3 that hold the water of `depth`.
+std::size_t cylinder_fill_count(const CylinderTank& tank, double dp, double depth);
+
+// The level that `particles` of volume dp^3 settle to in the cylinder: their volume over pi R^2
+// (the fill's depth, to half a particle).
 inline double cylinder_settled_level(const CylinderTank& tank, std::size_t particles, double dp) {
   return static_cast<double>(particles) * dp * dp * dp / (3.141592653589793 * tank.radius * tank.radius);
 }

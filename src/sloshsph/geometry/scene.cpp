@@ -219,17 +219,8 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
                                sample_walls(cylinder, dp, spec.particles.wall_layers));
   scene.cylinder = cylinder;
   for (std::size_t k = 0; k < spec.screens.size(); ++k) scene.screens.push_back(resolved_screen(spec, *tank, k));
-  // The square lattice leaves a ring of gaps inside the round wall: the water settles lower.
-  const double level = cylinder_settled_level(cylinder, scene.particles.n_fluid, dp);
-  if (spec.fill.depth - level > 0.2 * dp) {
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "fill.depth: the %zu particles of the cubic lattice inside the cylinder hold the water of a depth of "
-                  "%.4g m, not %.4g m (the lattice leaves gaps along the round wall): the water settles about there "
-                  "(a finer dp closes the gap: it is about dp/R of the water)",
-                  scene.particles.n_fluid, level, spec.fill.depth);
-    scene.warnings.push_back(text);
-  }
+  // The fill holds the water of fill.depth (fill_fluid): above the depth at first, it settles into
+  // the ring of gaps the square lattice leaves along the round wall.
   return scene;
 }
 

@@ -1,8 +1,10 @@
 // Upright cylinders (issue 31, section 2; geometry/cylinder_tank.hpp): the fill is the cubic lattice
-// inside r <= R - dp/2 below the level, symmetric about the axis; the walls are outside the fluid
-// region with normals towards it; the settled level is the fill's volume over pi R^2.
+// inside r <= R - dp/2, as many particles as hold the water of the depth (the last layer a disc
+// about the axis); the walls are outside the fluid region with normals towards it; the settled
+// level is the fill's volume over pi R^2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -15,28 +17,49 @@ TEST(CylinderTank, FillIsTheLatticeInsideTheWall) {
   const CylinderTank tank{0.15, 0.3};
   const double dp = 0.015, depth = 0.15;
   const std::vector<Vec3> fluid = fill_fluid(tank, dp, depth);
-  // Reference: the count of lattice points of one layer inside r <= R - dp/2, times the 10 rows
-  // whose centres lie below the level (exact integers).
+  // Reference: the water of the depth, round(pi R^2 h / dp^3) particles (3,142 here), in whole
+  // layers of the lattice points inside r <= R - dp/2 (276 a layer: exact integers) and, in the
+  // last, a disc of the points nearest the axis.
   int layer = 0;
   for (int j = 0; j < 20; ++j)
     for (int i = 0; i < 20; ++i)
       if (std::hypot((i + 0.5) * dp - 0.15, (j + 0.5) * dp - 0.15) <= 0.15 - 0.5 * dp + 1e-12) ++layer;
-  EXPECT_EQ(fluid.size(), static_cast<std::size_t>(10 * layer));
+  const std::size_t wanted = static_cast<std::size_t>(std::llround(std::numbers::pi * 0.15 * 0.15 * depth / (dp * dp * dp)));
+  EXPECT_EQ(fluid.size(), wanted);
+  EXPECT_EQ(cylinder_fill_count(tank, dp, depth), wanted);
+  const std::size_t whole = wanted / static_cast<std::size_t>(layer), rest = wanted % static_cast<std::size_t>(layer);
   Vec3 sum{};
+  double last_disc = 0.0, outside_it = 1.0;  // the last layer's largest radius, and the smallest radius of the others
   for (const Vec3& q : fluid) {
     EXPECT_GE(tank.signed_distance(q), 0.5 * dp - 1e-12);
-    EXPECT_LT(q.z, depth);
-    sum += q;
+    const int k = static_cast<int>(std::lround(q.z / dp - 0.5));
+    EXPECT_LE(k, static_cast<int>(whole));
+    if (k == static_cast<int>(whole)) last_disc = std::max(last_disc, tank.from_axis(q));
+    if (k < static_cast<int>(whole)) sum += q;
   }
-  // Symmetric about the axis (dp divides 2R): the centroid on it, to round-off.
-  EXPECT_NEAR(sum.x / fluid.size(), 0.15, 1e-12);
-  EXPECT_NEAR(sum.y / fluid.size(), 0.15, 1e-12);
-  // The settled level: the particles' volume over pi R^2, below the nominal depth by the ring of
-  // gaps along the wall (here 12%).
+  std::size_t in_last = 0;
+  for (const Vec3& q : fluid)
+    if (static_cast<int>(std::lround(q.z / dp - 0.5)) == static_cast<int>(whole)) ++in_last;
+  EXPECT_EQ(in_last, rest);
+  // Every lattice point of a layer left out of the last one is no nearer the axis than those in it.
+  for (int j = 0; j < 20; ++j)
+    for (int i = 0; i < 20; ++i) {
+      const double r = std::hypot((i + 0.5) * dp - 0.15, (j + 0.5) * dp - 0.15);
+      if (r > 0.15 - 0.5 * dp + 1e-12) continue;
+      bool taken = false;
+      for (const Vec3& q : fluid)
+        taken = taken || (std::lround(q.z / dp - 0.5) == static_cast<long>(whole) &&
+                          std::abs(q.x - (i + 0.5) * dp) < 1e-12 && std::abs(q.y - (j + 0.5) * dp) < 1e-12);
+      if (!taken) outside_it = std::min(outside_it, r);
+    }
+  EXPECT_GE(outside_it, last_disc - 1e-12);
+  // The whole layers are symmetric about the axis (dp divides 2R): their centroid on it, to round-off.
+  const double n_whole = static_cast<double>(whole * static_cast<std::size_t>(layer));
+  EXPECT_NEAR(sum.x / n_whole, 0.15, 1e-12);
+  EXPECT_NEAR(sum.y / n_whole, 0.15, 1e-12);
+  // The settled level: the particles' volume over pi R^2, the depth to half a particle.
   const double level = cylinder_settled_level(tank, fluid.size(), dp);
-  EXPECT_NEAR(level, fluid.size() * dp * dp * dp / (std::numbers::pi * 0.15 * 0.15), 1e-15);
-  EXPECT_LT(level, depth);
-  EXPECT_GT(level, 0.85 * depth);
+  EXPECT_NEAR(level, depth, 0.5 * dp * dp * dp / (std::numbers::pi * 0.15 * 0.15));
 }
 
 TEST(CylinderTank, WallsSurroundTheFluidWithInwardNormals) {
