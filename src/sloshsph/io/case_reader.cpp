@@ -713,10 +713,12 @@ void check_dimensions(const CaseSpec& s) {
       fail(key + ".from", "a screen in a cylinder is a vertical plane: give 'x' (the plane x = const) or 'y' (y = "
                           "const), or 'from' and 'to' with the same x");
     const double R = s.tank.radius, plane = sc.plane_y ? *sc.plane_y : sc.from.x;
-    if (!(std::abs(plane - R) < R - s.particles.dp))
-      fail(key + (sc.plane_y ? ".y" : sc.full_height ? ".x" : ".from"), "the screen's plane must cut the cylinder at least dp inside its wall: "
-                                             "|" + std::string(sc.plane_y ? "y" : "x") + " - radius| < radius - dp "
-                                             "(the axis stands at x = y = radius)");
+    if (!(std::abs(plane - R) < R - s.particles.dp)) {
+      const std::string axis = sc.plane_y ? "y" : "x";
+      fail(key + (sc.plane_y ? ".y" : sc.full_height ? ".x" : ".from"),
+           "the screen's plane must cut the cylinder at least dp inside its wall: |" + axis +
+               " - radius| < radius - dp (the axis stands at x = y = radius)");
+    }
   }
   if (!s.plates.empty()) fail("plates", "an elastic plate" + not_yet);
   if (s.tank.breadth < 4.0 * s.particles.dp)

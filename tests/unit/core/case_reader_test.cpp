@@ -556,6 +556,14 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
                              "case.toml", {})
                   .screens.at(0)
                   .plane_y.has_value());
+  // output.moment_point: [x, y, z] in 3D, [x, y] in 2D; written to case.toml only when given.
+  EXPECT_EQ(read_case_text(box, "case.toml", {"output.moment_point=[0.1, 0.2, 0.3]"}).output.moment_point->z, 0.3);
+  expect_error(box, {"output.moment_point=[0.1, 0.2]"}, "output.moment_point", "[x, y, z]");
+  expect_error(kMinimal, {"output.moment_point=[0.1, 0.2, 0.3]"}, "output.moment_point", "[x, y]");
+  EXPECT_EQ(resolved_case_toml(read_case_text(kMinimal, "case.toml", {})).find("moment_point"), std::string::npos);
+  EXPECT_NE(resolved_case_toml(read_case_text(kMinimal, "case.toml", {"output.moment_point=[0.0, 0.0]"}))
+                .find("moment_point = [ 0.0, 0.0 ]"),
+            std::string::npos);
   // Fill blocks in 3D: the section's rectangle over a box's or prism's breadth (settled depth from
   // the section's area, as in 2D); not in a cylinder. The front probe reads in 3D.
   const CaseSpec blocks = read_case_text(box + "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.2]\n"
