@@ -39,11 +39,14 @@ DESCRIPTIONS = {
     # 3D runs (summary.json "dimensions": 3): y is the breadth, z is up.
     "y_base": "base displacement along y", "v_base_y": "base velocity along y", "a_base_y": "base acceleration along y",
     "F_sw_y": "sloshing force along y, F_wy − m_w·Ÿ", "F_wz": "vertical wall force",
+    "M_w": "moment of the wall force about output.moment_point",
+    "M_wx": "moment of the wall force about x", "M_wy": "moment of the wall force about y",
+    "M_wz": "moment of the wall force about z (vertical)",
     "x_s_y": "structure displacement along y", "v_s_y": "structure velocity along y",
     "a_s_y": "structure acceleration along y", "F_TLD_y": "TLD force on the structure along y",
 }
 BASE = ["x_base", "y_base", "v_base", "v_base_y", "a_base", "a_base_y"]
-FORCES = ["F_w", "F_sw", "F_wy", "F_sw_y", "F_wz"]
+FORCES = ["F_w", "F_sw", "F_wy", "F_sw_y", "F_wz", "M_w", "M_wx", "M_wy", "M_wz"]
 
 
 def three_d(run):
