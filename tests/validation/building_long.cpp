@@ -1,9 +1,10 @@
 // Thesis chapter 4 building with the four tanks of Table 4.1 (FR, SF, PF, TLD) under one hour of
 // band-limited white-noise wind force (cases/building_<tank>_<level>mg.toml), against thesis
 // Table 4.3 (effective damping of the structure-TLD system) and Table 4.4 (peak structural
-// acceleration). Label `long`: one test per level, each four one-hour runs in sequence, about
-// 3.5-6.5 h a run on one thread at the cases' dp = 0.1 m (ctest -j 2 runs the two levels side
-// by side). Beside them, one test per run (BuildingRun, at the end of this file), so that a machine
+// acceleration). Label `long`: one test per level, each four one-hour runs in sequence at the cases'
+// dp = 0.1 m: at 10 milli-g (h = 1.8 dp, the midpoint predictor and the adaptive step under 15 ms,
+// since 2026-12-07) about 35-60 min a run on one thread, at 44 milli-g (h = 1.4 dp, a fixed 5 ms) 1.5-2.5 h
+// (ctest -j 2 runs the two levels side by side). Beside them, one test per run (BuildingRun, at the end of this file), so that a machine
 // with more cores makes the eight runs at once and the two level tests then only compare.
 //
 // The bar: every run completes with no particle lost; the effective damping and the peak
