@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sloshsph/core/vec2.hpp"
@@ -180,6 +181,10 @@ struct ScreenSpec {
   // 3D, given by `y` (issue 31): a full-height screen in the plane y = plane_y across the whole
   // length of a box (its section element stands at x = length / 2 until the driver lays it out).
   std::optional<double> plane_y;
+  // 3D, given by `plan_from` and `plan_to` (issue 31): a full-height screen in the vertical plane
+  // through that segment of the plan (x, y), at any angle, in a box or a cylinder (its section
+  // element stands at the segment's middle x until the driver lays it out along the segment).
+  std::optional<std::pair<Vec2, Vec2>> plan;
   double solidity = 0.0;         // S = 1 - porosity (thesis eq. 2.23)
   double slat_height = 0.0;      // m, explicit slats (and S = h_slat / (h_slat + h_gap) if given)
   double slat_gap = 0.0;         // m

@@ -383,7 +383,20 @@ void read_screens(TableReader& root, CaseSpec& spec) {
     if (r.has("y") && spec.tank.dimensions == 2)
       r.fail("y", "a screen in the plane y = const is for 3D tanks (tank.dimensions = 3); a 2D screen takes 'x' or "
                   "'from' and 'to'");
-    if (r.has("y")) {  // 3D (issue 31): a screen across the breadth
+    if ((r.has("plan_from") || r.has("plan_to")) && spec.tank.dimensions == 2)
+      r.fail(r.has("plan_from") ? "plan_from" : "plan_to",
+             "a screen in a vertical plane through a segment of the plan is for 3D tanks (tank.dimensions = 3)");
+    if (r.has("plan_from") || r.has("plan_to")) {  // 3D (issue 31): a vertical plane at any angle
+      for (const char* other : {"x", "y", "from", "to"})
+        if (r.has(other)) r.fail(other, "give either 'plan_from' and 'plan_to' or one of 'x', 'y', 'from' and 'to'");
+      if (!r.has("plan_from") || !r.has("plan_to"))
+        r.fail(r.has("plan_from") ? "plan_to" : "plan_from", "a screen in a plane through the plan needs both "
+                                                             "'plan_from' and 'plan_to' ([x, y] in m)");
+      sc.plan = std::make_pair(r.point("plan_from"), r.point("plan_to"));
+      sc.full_height = true;
+      sc.from = {0.5 * (sc.plan->first.x + sc.plan->second.x), 0.0};
+      sc.to = sc.from;
+    } else if (r.has("y")) {  // 3D (issue 31): a screen across the breadth
       for (const char* other : {"x", "from", "to"})
         if (r.has(other)) r.fail(other, "give either 'y' (a screen in the plane y = const) or 'x' or 'from' and 'to'");
       sc.plane_y = r.number("y");
@@ -671,6 +684,28 @@ void check_particle_estimate(const CaseSpec& s) {
   }
 }
 
+// A screen through a segment of the plan (plan_from, plan_to): in a box or a cylinder (flat
+// bottoms: the screen stands full height), porous (ergun, morison), both ends inside the tank's plan
+// (on its wall allowed), at least dp long.
+void check_plan_screen(const CaseSpec& s, const ScreenSpec& sc, const std::string& key) {
+  auto fail = [&](const std::string& sub, const std::string& what) {
+    throw InputError(s.where(key + "." + sub), key + "." + sub, what);
+  };
+  if (s.tank.shape != "rectangle" && s.tank.shape != "cylinder")
+    fail("plan_from", "a screen through a segment of the plan stands in a box (shape = \"rectangle\") or a cylinder");
+  if (sc.model == ScreenModel::explicit_slats)
+    fail("model", "explicit slats in a plane through the plan are not available yet (issue 31): ergun or morison");
+  const double tol = 1e-9;
+  for (const auto& [sub, q] : {std::pair<const char*, Vec2>{"plan_from", sc.plan->first}, {"plan_to", sc.plan->second}}) {
+    const bool inside = s.tank.shape == "cylinder"
+                            ? std::hypot(q.x - s.tank.radius, q.y - s.tank.radius) <= s.tank.radius + tol
+                            : q.x >= -tol && q.x <= s.tank.length + tol && q.y >= -tol && q.y <= s.tank.breadth + tol;
+    if (!inside) fail(sub, "the end of the screen must lie inside the tank's plan (on its wall at most)");
+  }
+  if (norm(sc.plan->second - sc.plan->first) < s.particles.dp)
+    fail("plan_to", "the screen is shorter than dp in the plan");
+}
+
 // What a 3D case (tank.dimensions = 3, issue 31) can hold so far: the ISPH scheme in a tank
 // extruded over its breadth or an upright cylinder, moved by a translation along
 // excitation.direction, with gauges and point pressure probes. Everything else is refused by name
@@ -702,6 +737,7 @@ void check_dimensions(const CaseSpec& s) {
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
     const std::string key = "screens." + std::to_string(k);
     const ScreenSpec& sc = s.screens[k];
+    if (sc.plan) check_plan_screen(s, sc, key);
     if (sc.plane_y && s.tank.shape != "rectangle" && s.tank.shape != "cylinder")
       fail(key + ".y", "a screen across the breadth (y) is available in a box (shape = \"rectangle\") or a cylinder "
                        "only");
@@ -712,6 +748,7 @@ void check_dimensions(const CaseSpec& s) {
     if (!sc.plane_y && sc.from.x != sc.to.x)
       fail(key + ".from", "a screen in a cylinder is a vertical plane: give 'x' (the plane x = const) or 'y' (y = "
                           "const), or 'from' and 'to' with the same x");
+    if (sc.plan) continue;  // checked above
     const double R = s.tank.radius, plane = sc.plane_y ? *sc.plane_y : sc.from.x;
     if (!(std::abs(plane - R) < R - s.particles.dp)) {
       const std::string axis = sc.plane_y ? "y" : "x";
@@ -1225,7 +1262,10 @@ std::string resolved_case_toml(const CaseSpec& s) {
   toml::array screens;
   for (const ScreenSpec& sc : s.screens) {
     toml::table t{{"name", sc.name}};
-    if (sc.plane_y) {
+    if (sc.plan) {
+      t.insert("plan_from", toml::array{sc.plan->first.x, sc.plan->first.y});
+      t.insert("plan_to", toml::array{sc.plan->second.x, sc.plan->second.y});
+    } else if (sc.plane_y) {
       t.insert("y", *sc.plane_y);
     } else if (sc.full_height) {
       t.insert("x", sc.from.x);

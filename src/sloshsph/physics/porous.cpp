@@ -142,8 +142,10 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
     const std::size_t first = e.first, count = e.count;
     e.first = out.position.size();
     if (index < specs.size()) e.plane_y = specs[index].plane_y;
+    if (index < specs.size()) e.plan = specs[index].plan;
     if (count > 0) {
-      const auto [start, end] = extrusion_interval(e, breadth, length, cylinder_radius);
+      const auto [start, end] = e.plan ? std::pair<double, double>{0.0, norm(e.plan->second - e.plan->first)}
+                                       : extrusion_interval(e, breadth, length, cylinder_radius);
       const double extent = end - start;  // along which the element is repeated
       e.count_across = std::max<std::size_t>(
           1, static_cast<std::size_t>(std::ceil(extent / e.nominal_spacing - 1e-9)));
@@ -154,7 +156,12 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
         for (std::size_t m = 0; m < e.count_across; ++m) {
           const Vec2 q = section.position[k];
           const double along = start + (static_cast<double>(m) + 0.5) * e.spacing_across;
-          out.position.push_back(e.plane_y ? Vec3{along, *e.plane_y, q.y} : Vec3{q.x, along, q.y});
+          if (e.plan) {  // `along` from the segment's first end
+            const Vec2 at = e.plan->first + along * normalized(e.plan->second - e.plan->first);
+            out.position.push_back({at.x, at.y, q.y});
+          } else {
+            out.position.push_back(e.plane_y ? Vec3{along, *e.plane_y, q.y} : Vec3{q.x, along, q.y});
+          }
           out.element.push_back(static_cast<std::uint32_t>(index));
         }
       e.count = count * e.count_across;
@@ -173,7 +180,12 @@ namespace {
 template <int D>
 Vec<D> element_normal(const ScreenElement& e) {
   if constexpr (D == 2) return e.normal;
-  else return e.plane_y ? Vec3{0.0, 1.0, 0.0} : Vec3{e.normal.x, 0.0, e.normal.y};
+  else if (e.plan) {
+    const Vec2 along = normalized(e.plan->second - e.plan->first);
+    return {along.y, -along.x, 0.0};
+  } else {
+    return e.plane_y ? Vec3{0.0, 1.0, 0.0} : Vec3{e.normal.x, 0.0, e.normal.y};
+  }
 }
 
 template <int D>

@@ -88,6 +88,9 @@ struct ScreenElement {
   // vertical column of particles, repeated along the length instead (count_across columns
   // spacing_across apart), normal (0, 1, 0).
   std::optional<double> plane_y;
+  // 3D: a screen in the vertical plane through the plan segment (ScreenSpec::plan): the section's
+  // column repeated along the segment, normal horizontal and perpendicular to it.
+  std::optional<std::pair<Vec2, Vec2>> plan;
   double thickness = 0.0;    // m, t_sc (L of eq. 2.24)
   double smoothing_length = 0.0;  // m, h_sc of the screen's Wendland kernel (support 2 h_sc)
   double solidity = 0.0;     // S
@@ -140,6 +143,9 @@ ScreenParticles make_screen_particles(const std::vector<ScreenSpec>& specs, doub
 // element; the undisturbed weight is the cubic lattice's sum. An element whose spec has plane_y
 // (specs[k], empty specs: none) is the section's vertical column repeated along the length instead,
 // at x = (m + 1/2) length / n, n = ceil(length / dp_sc), in the plane y = plane_y.
+// An element whose spec has a plan segment is the section's column repeated along that segment
+// (from its `first` end), on n = ceil(length / dp_sc) rows (length / n) apart, half a spacing from
+// the ends, in a box or a cylinder alike.
 // In an upright cylinder (cylinder_radius R > 0, axis at (R, R), breadth = length = 2R) a vertical
 // element is repeated over the chord its plane cuts from the circle instead: |y - R| <= w (or
 // |x - R| <= w in the plane y = plane_y), w = sqrt(R^2 - (c - R)^2), c the plane's x (or y), on rows

@@ -15,6 +15,10 @@ void add_screen_particles(nlohmann::json& j, const ScreenElement& e) {
     j["spacing_across_m"] = e.spacing_across;
   }
   if (e.plane_y) j["plane_y_m"] = *e.plane_y;  // from, to: its vertical column, repeated along x
+  if (e.plan) {  // from, to: its vertical column, repeated along the plan segment
+    j["plan_from_m"] = {e.plan->first.x, e.plan->first.y};
+    j["plan_to_m"] = {e.plan->second.x, e.plan->second.y};
+  }
 }
 
 }  // namespace

@@ -564,6 +564,24 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   EXPECT_NE(resolved_case_toml(read_case_text(kMinimal, "case.toml", {"output.moment_point=[0.0, 0.0]"}))
                 .find("moment_point = [ 0.0, 0.0 ]"),
             std::string::npos);
+  // Screens through a segment of the plan (any angle): 3D, box or cylinder, porous, ends inside.
+  const CaseSpec diagonal =
+      read_case_text(box + "\n[[screens]]\nname = \"d\"\nplan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nsolidity = 0.4\n",
+                     "case.toml", {});
+  ASSERT_TRUE(diagonal.screens.at(0).plan.has_value());
+  EXPECT_EQ(diagonal.screens.at(0).plan->second.x, 0.4);
+  EXPECT_NE(resolved_case_toml(diagonal).find("plan_to"), std::string::npos);
+  const std::string plan_screen = "\n[[screens]]\nname = \"d\"\nsolidity = 0.4\n";
+  expect_error(box + plan_screen + "plan_from = [0.0, 0.0]\n", {}, "screens.0.plan_to", "both");
+  expect_error(box + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.5, 0.2]\n", {}, "screens.0.plan_to",
+               "inside the tank");
+  expect_error(box + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nx = 0.1\n", {}, "screens.0.x",
+               "plan_from");
+  expect_error(box + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nmodel = \"explicit\"\n"
+                                   "slat_height = 0.01\nslat_gap = 0.01\n",
+               {}, "screens.0.model", "explicit");
+  expect_error(kMinimal + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\n", {}, "screens.0.plan_from",
+               "3D");
   // Fill blocks in 3D: the section's rectangle over a box's or prism's breadth (settled depth from
   // the section's area, as in 2D); not in a cylinder. The front probe reads in 3D.
   const CaseSpec blocks = read_case_text(box + "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.2]\n"

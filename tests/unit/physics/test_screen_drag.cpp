@@ -455,5 +455,38 @@ TEST(ScreenDrag, ExtrudedPerforatedFloorInThreeDimensions) {
             0.0);
 }
 
+// A screen in a vertical plane through the plan at any angle (issue 31; plan_from, plan_to): a
+// Morison screen (S = 0.42) z from 0.4 to 0.6 m through the plan segment (0.2, 0.2)-(0.5, 0.5), 45
+// degrees to x, in a uniform flow u = (0.1, 0, 0). References: the rows along the segment, n =
+// ceil(0.4243 / 0.02) = 22, all on it; the force on the fluid -1/2 rho C_l |u_n| u_n n A with n the
+// plan normal (1, -1, 0)/sqrt(2), u_n = u . n and A = 0.4243 x 0.2 m (Morison's closure over the
+// screen's area) within 2%, as the other screens' tests; its x and y parts opposite to round-off
+// (the drag is along n); a flow along the plane, (1, 1, 0) 0.1/sqrt(2), not resisted (exactly 0).
+TEST(ScreenDrag, ScreenInAPlaneThroughThePlanAtAnyAngle) {
+  const double dp = 0.02, h = 1.4 * dp;
+  ScreenSpec spec = screen({0.35, 0.4}, {0.35, 0.6}, ScreenModel::morison, 0.42);
+  spec.plan = std::make_pair(Vec2{0.2, 0.2}, Vec2{0.5, 0.5});
+  const BasicScreenParticles<3> sp =
+      extrude_screen_particles(make_screen_particles({spec}, dp, h, big_tank(), "t"), 1.0, dp, {spec}, 1.0);
+  const ScreenElement& e = sp.elements[0];
+  const double length = 0.3 * std::sqrt(2.0);
+  EXPECT_EQ(e.count_across, 22u);
+  EXPECT_NEAR(e.spacing_across, length / 22.0, 1e-15);
+  for (const Vec3& q : sp.position) EXPECT_NEAR(q.x, q.y, 1e-12);
+  EXPECT_NEAR(sp.position[0].x, 0.2 + 0.5 * e.spacing_across / std::sqrt(2.0), 1e-12);
+  const Vec3 u{0.1, 0.0, 0.0}, n{1.0 / std::sqrt(2.0), -1.0 / std::sqrt(2.0), 0.0};
+  const UniformFlowDrag d = drag_in_uniform_flow(sp, {-0.1, -0.1, 0.2}, {0.8, 0.8, 0.8}, dp, u);
+  const double un = dot(u, n);
+  const Vec3 expected = n * (-0.5 * kRho * e.loss_coefficient * std::abs(un) * un * length * 0.2);
+  std::printf("  diagonal Morison screen: F = (%.6f, %.6f) N, expected (%.6f, %.6f) N\n", d.load.force_on_fluid.x,
+              d.load.force_on_fluid.y, expected.x, expected.y);
+  EXPECT_NEAR(d.load.force_on_fluid.x, expected.x, 0.02 * std::abs(expected.x));
+  EXPECT_NEAR(d.load.force_on_fluid.y, expected.y, 0.02 * std::abs(expected.y));
+  EXPECT_NEAR(d.load.force_on_fluid.x, -d.load.force_on_fluid.y, 1e-12 * std::abs(expected.x));
+  const Vec3 along = Vec3{1.0, 1.0, 0.0} * (0.1 / std::sqrt(2.0));
+  EXPECT_NEAR(norm(drag_in_uniform_flow(sp, {-0.1, -0.1, 0.2}, {0.8, 0.8, 0.8}, dp, along).load.force_on_fluid), 0.0,
+              1e-15);
+}
+
 }  // namespace
 }  // namespace sloshsph
