@@ -428,8 +428,8 @@ TEST(Validation, DamBreakSlabReproducesTheTwoDimensionalFront) {
 // mirrored but the particles' order is not, so the two runs part at round-off and grow apart);
 // the screen's force along its normal (1, -1)/sqrt(2): its x and y parts opposite, RMS within 1e-9
 // of each other (Morison resists the flow through the screen only; its magnitude is checked in
-// ScreenDrag.ScreenInAPlaneThroughThePlanAtAnyAngle); 0 particles lost. Measured 2026-12-07 (2 s):
-// F +0.4%, gauge +0.5%.
+// ScreenDrag.ScreenInAPlaneThroughThePlanAtAnyAngle); 0 particles lost. Measured 2026-12-07: F +0.33%,
+// gauge +0.27%; 53 s on one thread beside two other runs.
 TEST(Validation, DiagonalScreenMirrorsTheSquareBoxsResponse) {
   const std::string text = R"([tank]
 dimensions = 3
