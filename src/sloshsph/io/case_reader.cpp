@@ -734,7 +734,7 @@ void check_dimensions(const CaseSpec& s) {
                               "porous screens across the breadth, gauges and point pressure probes";
   if (s.excitation.type == ExcitationType::pitch && (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0))
     fail("excitation.direction", "is the direction of a translation; a rotation turns about 'axis'");
-  for (std::size_t k = 0; k < s.screens.size(); ++k) {  // ergun and morison, extruded over the breadth
+  for (std::size_t k = 0; k < s.screens.size(); ++k) {  // extruded over the breadth, a cylinder's chord or a plan segment
     const std::string key = "screens." + std::to_string(k);
     const ScreenSpec& sc = s.screens[k];
     if (sc.plan) check_plan_screen(s, sc, key);
