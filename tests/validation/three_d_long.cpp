@@ -233,8 +233,9 @@ TEST(ValidationLong, CylinderFirstSloshingModeThroughTheDriver) {
 // response would not have. cases/cylinder3d_swirling.toml: R = 0.15 m, 0.15 m of water (omega1 =
 // 10.70 rad/s), 5 mm (X0/R = 0.033) at 1.03 omega1 (beta), 25 s; and the same case at 0.85 omega1,
 // below resonance, where the planar wave is stable. Measured 2026-12-07 (the fill holding the
-// depth's water): 0.983 F_wy / F_w and -0.99 turns a period at 1.03 omega1 (before, with the
-// water settled 12% low and the forcing at 1.73 Hz: 0.99 and -1.02), 0.0039 at 0.85 omega1. The limits of the swirling band
+// depth's water): 0.963 F_wy / F_w and +0.98 turns a period at 1.03 omega1, 0.0062 at 0.85 omega1
+// (before, with the water settled 12% low and the forcing at 1.73 Hz: 0.99, -1.02 and 0.010); 10 min
+// on one thread beside two one-hour runs. The limits of the swirling band
 // in omega / omega1 were not read here (the papers' full texts were not at hand): the test uses one
 // frequency close above omega1, inside the band by either theory, and one well below it.
 // Checked over the last 3 s (22-25 s): at 1.03 omega1 the RMS of the transverse force F_wy at least
