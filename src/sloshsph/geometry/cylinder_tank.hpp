@@ -74,4 +74,9 @@ inline double cylinder_settled_level(const CylinderTank& tank, std::size_t parti
 // zero of J1'.
 double cylinder_first_sloshing_omega(double radius, double depth, double gravity);
 
+// The first mode's convective (sloshing) mass as a fraction of the liquid's, under a horizontal
+// motion (linear potential theory; Abramson 1966, NASA SP-106, ch. 6; Ibrahim 2005, ch. 2):
+//   m_1 / m = 2 tanh(xi h / R) / (xi (xi^2 - 1) h / R),   xi = 1.8412.
+double cylinder_convective_mass_fraction(double radius, double depth);
+
 }  // namespace sloshsph

@@ -4,11 +4,43 @@
 #include <numbers>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/cylinder_tank.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/linear/modal.hpp"
 #include "sloshsph/run/structure_coupling.hpp"
 
 namespace sloshsph {
+
+namespace {
+
+// The band the area method integrates over: the noise load's, or 0.01-10 f_n.
+void set_band(TankAsTmd& t, const StructureSpec& s) {
+  t.band_from_load = s.load.type == StructureLoadType::noise;
+  const double fn = t.tmd.structure.natural_frequency();
+  t.band_low = t.band_from_load ? s.load.band_low : 0.01 * fn;
+  t.band_high = t.band_from_load ? s.load.band_high : 10.0 * fn;
+}
+
+}  // namespace
+
+TankAsTmd cylinder_as_tmd(const CaseSpec& spec, bool along_y) {
+  const std::string key = along_y ? "structure.y" : "structure";
+  const std::optional<StructureSpec>& mode = along_y ? spec.structure_y : spec.structure;
+  if (!mode) throw InputError(spec.source, key, "the case has no [" + key + "]");
+  if (mode->tanks < 1)
+    throw InputError(spec.where("structure.tanks"), "structure.tanks",
+                     "tanks = 0: the liquid does not act on the structure, so it has no equivalent TMD");
+  const double R = spec.tank.radius, h = spec.fill.depth, tanks = mode->tanks;
+  TankAsTmd t;
+  t.liquid_mass = spec.fluid.density * std::numbers::pi * R * R * h * tanks;
+  t.convective_fraction = cylinder_convective_mass_fraction(R, h);
+  t.tmd.structure = sdof_spec(*mode);
+  t.tmd.convective_mass = t.convective_fraction * t.liquid_mass;
+  t.tmd.rigid_mass = (1.0 - t.convective_fraction) * t.liquid_mass + mode->rigid_mass * tanks;
+  t.tmd.convective_omega = cylinder_first_sloshing_omega(R, h, spec.fluid.gravity);
+  set_band(t, *mode);
+  return t;
+}
 
 TankAsTmd tank_as_tmd(const CaseSpec& spec) {
   if (!spec.structure) throw InputError(spec.source, "structure", "the case has no [structure] to put a TMD on");
@@ -27,10 +59,7 @@ TankAsTmd tank_as_tmd(const CaseSpec& spec) {
   t.tmd.convective_mass = t.convective_fraction * t.liquid_mass;
   t.tmd.rigid_mass = (1.0 - t.convective_fraction) * t.liquid_mass + s.rigid_mass * width;
   t.tmd.convective_omega = mode.omega;
-  t.band_from_load = s.load.type == StructureLoadType::noise;
-  const double fn = t.tmd.structure.natural_frequency();
-  t.band_low = t.band_from_load ? s.load.band_low : 0.01 * fn;
-  t.band_high = t.band_from_load ? s.load.band_high : 10.0 * fn;
+  set_band(t, s);
   return t;
 }
 
@@ -83,7 +112,8 @@ CaseSpec sway_section_case(const CaseSpec& spec, bool along_y) {
 nlohmann::json equivalent_tmd_summary(const CaseSpec& spec, std::optional<double> measured_effective_damping,
                                       bool along_y) {
   try {
-    const TankAsTmd t = tank_as_tmd(spec.tank.dimensions == 3 ? sway_section_case(spec, along_y) : spec);
+    const TankAsTmd t = spec.tank.shape == "cylinder" ? cylinder_as_tmd(spec, along_y)
+                        : tank_as_tmd(spec.tank.dimensions == 3 ? sway_section_case(spec, along_y) : spec);
     nlohmann::json j = equivalent_tmd_json(t, {}, optimal_equivalent_tmd(t.tmd, t.band_low, t.band_high));
     j["method"] = "linear: mode 1 as a mass on a spring (structure/equivalent_tmd.hpp); screens and floors ignored";
     j["tank_damping_for_measured_effective_damping"] = nullptr;

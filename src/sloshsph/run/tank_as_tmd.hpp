@@ -19,6 +19,11 @@ struct TankAsTmd {
   bool band_from_load = false;  // the noise load's band; otherwise 0.01-10 f_n (white noise)
 };
 
+// An upright cylinder (3D) under the sway along x, or with along_y that of [structure.y]: its
+// first mode (cylinder_first_sloshing_omega, cylinder_convective_mass_fraction) over the liquid
+// of `structure.tanks` cylinders, rigid_mass kg each. Throws InputError as tank_as_tmd.
+TankAsTmd cylinder_as_tmd(const CaseSpec& spec, bool along_y = false);
+
 // Throws InputError (naming the case's `structure` key) if the case has no [structure] or its
 // tanks do not act on it (tanks = 0). Screens, baffles and floors inside the tank are ignored:
 // the mode is that of the open section (their effect is what zeta_t stands for).

@@ -7,6 +7,7 @@
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/io/case_reader.hpp"
+#include "sloshsph/geometry/cylinder_tank.hpp"
 #include "sloshsph/run/tank_as_tmd.hpp"
 
 namespace sloshsph {
@@ -70,11 +71,28 @@ TEST(TankAsTmd, ThreeDimensionalBoxInEachDirection) {
     const StructureSpec& mode = along_y ? *spec.structure_y : *spec.structure;
     EXPECT_EQ(t.tmd.structure.stiffness, mode.stiffness) << along_y;
   }
-  const nlohmann::json note =
-      equivalent_tmd_summary(read_case_file(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml",
-                                            {"excitation={type=\"none\"}", "structure={mass=100.0, frequency=1.0, damping_ratio=0.01}"}),
-                             std::nullopt);
-  EXPECT_TRUE(note.contains("note")) << note.dump();
+}
+
+// An upright cylinder (R = 0.15 m, 0.15 m of water) on a structure swaying both ways, two tanks of
+// 1 kg of rigid mass each: its first mode as the TMD in each direction (references: rho pi R^2 h
+// per tank exact; m_1/m and omega_1 of geometry/cylinder_tank.hpp, themselves checked against the
+// modal integrals and linear theory; each direction's own structure).
+TEST(TankAsTmd, UprightCylinderInEachDirection) {
+  const CaseSpec spec = read_case_file(
+      std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml",
+      {"excitation={type=\"none\"}", "structure={mass=100.0, frequency=1.7, damping_ratio=0.01, tanks=2, rigid_mass=1.0}",
+       "structure.y={mass=80.0, frequency=1.6, damping_ratio=0.02}"});
+  const double R = 0.15, h = 0.15, liquid = 2.0 * 1000.0 * std::numbers::pi * R * R * h;
+  for (const bool along_y : {false, true}) {
+    const nlohmann::json j = equivalent_tmd_summary(spec, std::nullopt, along_y);
+    ASSERT_TRUE(j.contains("optimum")) << j.dump();
+    EXPECT_NEAR(j["liquid_mass_kg"].get<double>(), liquid, 1e-9);
+    EXPECT_NEAR(j["convective_mass_fraction"].get<double>(), cylinder_convective_mass_fraction(R, h), 1e-15);
+    EXPECT_NEAR(j["convective_frequency_Hz"].get<double>(),
+                cylinder_first_sloshing_omega(R, h, 9.81) / (2.0 * std::numbers::pi), 1e-12);
+    EXPECT_NEAR(j["rigid_mass_kg"].get<double>() - (1.0 - cylinder_convective_mass_fraction(R, h)) * liquid, 2.0, 1e-9);
+    EXPECT_NEAR(j["structure_frequency_Hz"].get<double>(), along_y ? 1.6 : 1.7, 1e-12);
+  }
 }
 
 TEST(TankAsTmd, NeedsTanksActingOnAStructure) {
