@@ -63,16 +63,16 @@ std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth) 
 }
 
 std::size_t cylinder_fill_count(const CylinderTank& tank, double dp, double depth) {
-  return static_cast<std::size_t>(std::llround(3.141592653589793 * tank.radius * tank.radius * depth / (dp * dp * dp)));
+  return static_cast<std::size_t>(std::llround(std::numbers::pi * tank.radius * tank.radius * depth / (dp * dp * dp)));
 }
 
 double cylinder_convective_mass_fraction(double radius, double depth) {
-  const double xi = 1.8412, ratio = depth / radius;
+  const double xi = kCylinderFirstRoot, ratio = depth / radius;
   return 2.0 * std::tanh(xi * ratio) / (xi * (xi * xi - 1.0) * ratio);
 }
 
 double cylinder_first_sloshing_omega(double radius, double depth, double gravity) {
-  const double k = 1.8412 / radius;
+  const double k = kCylinderFirstRoot / radius;
   return std::sqrt(gravity * k * std::tanh(k * depth));
 }
 

@@ -69,6 +69,9 @@ inline double cylinder_settled_level(const CylinderTank& tank, std::size_t parti
   return static_cast<double>(particles) * dp * dp * dp / (3.141592653589793 * tank.radius * tank.radius);
 }
 
+// 1.8412, the first zero of J1': k_1 R of the first mode of an upright cylinder.
+inline constexpr double kCylinderFirstRoot = 1.8412;
+
 // The first sloshing mode of an upright cylinder of radius R filled to h (linear potential
 // theory; e.g. Ibrahim 2005, ch. 2): omega^2 = g k tanh(k h), k = 1.8412 / R, 1.8412 the first
 // zero of J1'.

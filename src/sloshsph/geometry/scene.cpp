@@ -258,8 +258,9 @@ Scene3 build_scene3(const CaseSpec& spec) {
   check_probes_3d(spec, [&prism](Vec3 p) { return prism.signed_distance(p); }, tank->y_top);
   const double dp = spec.particles.dp;
   const std::vector<FluidBlock>& blocks = spec.fill.blocks;  // each over the whole breadth
-  std::vector<Vec3> fluid = blocks.empty() ? fill_fluid(prism, dp, spec.fill.depth)
-                                           : on_planes_across(prism, dp, fill_blocks(*tank, dp, blocks));
+  const std::vector<Vec2> section_fluid =
+      blocks.empty() ? fill_fluid(*tank, dp, spec.fill.depth) : fill_blocks(*tank, dp, blocks);
+  std::vector<Vec3> fluid = on_planes_across(prism, dp, section_fluid);
   std::vector<WallSample3> walls = sample_walls(prism, dp, spec.particles.wall_layers);
   // Screens: ergun and morison elements are extruded over the breadth by the driver
   // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it, or,
@@ -289,7 +290,7 @@ Scene3 build_scene3(const CaseSpec& spec) {
   }
   Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
   if (blocks.empty()) {
-    add_fill_warning(spec, *tank, fill_fluid(*tank, dp, spec.fill.depth).size(), scene.warnings);
+    add_fill_warning(spec, *tank, section_fluid.size(), scene.warnings);
   } else {  // each particle at the hydrostatic pressure below the top of its block, as in 2D
     Particles3& p = scene.particles;
     const double rho_g = spec.fluid.density * spec.fluid.gravity;

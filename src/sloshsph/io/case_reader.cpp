@@ -737,7 +737,10 @@ void check_dimensions(const CaseSpec& s) {
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // extruded over the breadth, a cylinder's chord or a plan segment
     const std::string key = "screens." + std::to_string(k);
     const ScreenSpec& sc = s.screens[k];
-    if (sc.plan) check_plan_screen(s, sc, key);
+    if (sc.plan) {  // in a box or a cylinder alike
+      check_plan_screen(s, sc, key);
+      continue;
+    }
     if (sc.plane_y && s.tank.shape != "rectangle" && s.tank.shape != "cylinder")
       fail(key + ".y", "a screen across the breadth (y) is available in a box (shape = \"rectangle\") or a cylinder "
                        "only");
@@ -748,7 +751,6 @@ void check_dimensions(const CaseSpec& s) {
     if (!sc.plane_y && sc.from.x != sc.to.x)
       fail(key + ".from", "a screen in a cylinder is a vertical plane: give 'x' (the plane x = const) or 'y' (y = "
                           "const), or 'from' and 'to' with the same x");
-    if (sc.plan) continue;  // checked above
     const double R = s.tank.radius, plane = sc.plane_y ? *sc.plane_y : sc.from.x;
     if (!(std::abs(plane - R) < R - s.particles.dp)) {
       const std::string axis = sc.plane_y ? "y" : "x";

@@ -141,8 +141,14 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
     ScreenElement e = section.elements[index];
     const std::size_t first = e.first, count = e.count;
     e.first = out.position.size();
-    if (index < specs.size()) e.plane_y = specs[index].plane_y;
-    if (index < specs.size()) e.plan = specs[index].plan;
+    if (index < specs.size()) {
+      e.plane_y = specs[index].plane_y;
+      e.plan = specs[index].plan;
+    }
+    const Vec2 plan_direction = e.plan ? normalized(e.plan->second - e.plan->first) : Vec2{};
+    e.normal3 = e.plan      ? Vec3{plan_direction.y, -plan_direction.x, 0.0}
+                : e.plane_y ? Vec3{0.0, 1.0, 0.0}
+                            : Vec3{e.normal.x, 0.0, e.normal.y};
     if (count > 0) {
       const auto [start, end] = e.plan ? std::pair<double, double>{0.0, norm(e.plan->second - e.plan->first)}
                                        : extrusion_interval(e, breadth, length, cylinder_radius);
@@ -157,7 +163,7 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
           const Vec2 q = section.position[k];
           const double along = start + (static_cast<double>(m) + 0.5) * e.spacing_across;
           if (e.plan) {  // `along` from the segment's first end
-            const Vec2 at = e.plan->first + along * normalized(e.plan->second - e.plan->first);
+            const Vec2 at = e.plan->first + along * plan_direction;
             out.position.push_back({at.x, at.y, q.y});
           } else {
             out.position.push_back(e.plane_y ? Vec3{along, *e.plane_y, q.y} : Vec3{q.x, along, q.y});
@@ -176,16 +182,11 @@ BasicScreenParticles<3> extrude_screen_particles(const ScreenParticles& section,
 
 namespace {
 
-// The element's unit normal in D dimensions (3D: the section's, the extrusion adds no y part).
+// The element's unit normal in D dimensions (3D: the extruded element's, ScreenElement::normal3).
 template <int D>
 Vec<D> element_normal(const ScreenElement& e) {
   if constexpr (D == 2) return e.normal;
-  else if (e.plan) {
-    const Vec2 along = normalized(e.plan->second - e.plan->first);
-    return {along.y, -along.x, 0.0};
-  } else {
-    return e.plane_y ? Vec3{0.0, 1.0, 0.0} : Vec3{e.normal.x, 0.0, e.normal.y};
-  }
+  else return e.normal3;
 }
 
 template <int D>

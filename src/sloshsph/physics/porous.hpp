@@ -91,6 +91,9 @@ struct ScreenElement {
   // 3D: a screen in the vertical plane through the plan segment (ScreenSpec::plan): the section's
   // column repeated along the segment, normal horizontal and perpendicular to it.
   std::optional<std::pair<Vec2, Vec2>> plan;
+  // 3D: the unit normal of the extruded element, set by extrude_screen_particles: (n_x, 0, n_z) of
+  // the section's element, (0, 1, 0) in the plane y = plane_y, horizontal across a plan segment.
+  Vec3 normal3;
   double thickness = 0.0;    // m, t_sc (L of eq. 2.24)
   double smoothing_length = 0.0;  // m, h_sc of the screen's Wendland kernel (support 2 h_sc)
   double solidity = 0.0;     // S

@@ -381,6 +381,20 @@ void warn_pinned(const BasicSimulation<D>& sim) {
                sim.pinned_steps() == kWarnings ? " (further cases are counted in summary.json, not shown)" : "");
 }
 
+// One sway direction of the structure (summary.json `key`): RMS and peak response, and under a noise
+// load the admittance, the effective damping and the linear equivalent TMD; its admittance file.
+void summarise_sway(nlohmann::json& s, const std::string& key, const StructureSeries& ss, const StructureSpec& mode,
+                    const CaseSpec& spec, bool along_y, const fs::path& admittance_file) {
+  s[key] = structure_summary(ss, mode);
+  if (spec.structure->tanks >= 1 && mode.load.type == StructureLoadType::noise) {
+    const nlohmann::json& admittance = s[key].value("admittance", nlohmann::json::object());
+    std::optional<double> measured;
+    if (admittance.contains("effective_damping_ratio")) measured = admittance["effective_damping_ratio"].get<double>();
+    s[key]["equivalent_tmd"] = equivalent_tmd_summary(spec, measured, along_y);
+  }
+  if (auto a = structure_admittance(ss, mode)) write_file_atomic(admittance_file.string(), admittance_csv(*a));
+}
+
 template <int D>
 int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, RunProgress& progress,
              const RunOptions& options) {
@@ -506,30 +520,14 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
     StructureSeries ss = structure_series(column_names(sim), series.columns, "", "_y");
     if (spec.structure->ground_from_excitation)
       for (const double t : ss.time) ss.ground_acceleration.push_back(sim.ground_motion(t).acceleration_y);
-    s["structure_y"] = structure_summary(ss, *spec.structure_y);
-    if (spec.structure->tanks >= 1 && spec.structure_y->load.type == StructureLoadType::noise) {
-      const nlohmann::json& admittance = s["structure_y"].value("admittance", nlohmann::json::object());
-      std::optional<double> measured;
-      if (admittance.contains("effective_damping_ratio")) measured = admittance["effective_damping_ratio"].get<double>();
-      s["structure_y"]["equivalent_tmd"] = equivalent_tmd_summary(spec, measured, true);
-    }
-    if (auto a = structure_admittance(ss, *spec.structure_y))
-      write_file_atomic((fs::path(dir) / "admittance_y.csv").string(), admittance_csv(*a));
+    summarise_sway(s, "structure_y", ss, *spec.structure_y, spec, true, fs::path(dir) / "admittance_y.csv");
   }
   if (spec.structure && !series.columns.empty()) {
     // RMS and peak response, and for noise loads the admittance and effective damping.
     StructureSeries ss = structure_series(column_names(sim), series.columns);
     if (spec.structure->ground_from_excitation)  // the same ground motion for the structure without tanks
       for (const double t : ss.time) ss.ground_acceleration.push_back(sim.ground_motion(t).acceleration.x);
-    s["structure"] = structure_summary(ss, *spec.structure);
-    if (spec.structure->tanks >= 1 && spec.structure->load.type == StructureLoadType::noise) {
-      const nlohmann::json& admittance = s["structure"].value("admittance", nlohmann::json::object());
-      std::optional<double> measured;
-      if (admittance.contains("effective_damping_ratio")) measured = admittance["effective_damping_ratio"].get<double>();
-      s["structure"]["equivalent_tmd"] = equivalent_tmd_summary(spec, measured);
-    }
-    if (auto a = structure_admittance(ss, *spec.structure))
-      write_file_atomic((fs::path(dir) / "admittance.csv").string(), admittance_csv(*a));
+    summarise_sway(s, "structure", ss, *spec.structure, spec, false, fs::path(dir) / "admittance.csv");
   }
   if (!sim.plates().empty()) {
     nlohmann::json plates = nlohmann::json::array();

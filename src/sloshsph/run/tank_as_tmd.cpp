@@ -13,12 +13,29 @@ namespace sloshsph {
 
 namespace {
 
-// The band the area method integrates over: the noise load's, or 0.01-10 f_n.
-void set_band(TankAsTmd& t, const StructureSpec& s) {
+// Throws unless the structure's tanks act on it.
+void require_tanks(const CaseSpec& spec, const StructureSpec& s) {
+  if (s.tanks < 1)
+    throw InputError(spec.where("structure.tanks"), "structure.tanks",
+                     "tanks = 0: the liquid does not act on the structure, so it has no equivalent TMD");
+}
+
+// The TMD of `liquid` kg whose first mode holds `fraction` of it at `omega`, on the structure `s`,
+// with `rigid` kg more moving rigidly with the tank; the area method's band is the noise load's,
+// or 0.01-10 f_n.
+TankAsTmd liquid_as_tmd(const StructureSpec& s, double liquid, double fraction, double omega, double rigid) {
+  TankAsTmd t;
+  t.liquid_mass = liquid;
+  t.convective_fraction = fraction;
+  t.tmd.structure = sdof_spec(s);
+  t.tmd.convective_mass = fraction * liquid;
+  t.tmd.rigid_mass = (1.0 - fraction) * liquid + rigid;
+  t.tmd.convective_omega = omega;
   t.band_from_load = s.load.type == StructureLoadType::noise;
   const double fn = t.tmd.structure.natural_frequency();
   t.band_low = t.band_from_load ? s.load.band_low : 0.01 * fn;
   t.band_high = t.band_from_load ? s.load.band_high : 10.0 * fn;
+  return t;
 }
 
 }  // namespace
@@ -27,40 +44,22 @@ TankAsTmd cylinder_as_tmd(const CaseSpec& spec, bool along_y) {
   const std::string key = along_y ? "structure.y" : "structure";
   const std::optional<StructureSpec>& mode = along_y ? spec.structure_y : spec.structure;
   if (!mode) throw InputError(spec.source, key, "the case has no [" + key + "]");
-  if (mode->tanks < 1)
-    throw InputError(spec.where("structure.tanks"), "structure.tanks",
-                     "tanks = 0: the liquid does not act on the structure, so it has no equivalent TMD");
+  require_tanks(spec, *mode);
   const double R = spec.tank.radius, h = spec.fill.depth, tanks = mode->tanks;
-  TankAsTmd t;
-  t.liquid_mass = spec.fluid.density * std::numbers::pi * R * R * h * tanks;
-  t.convective_fraction = cylinder_convective_mass_fraction(R, h);
-  t.tmd.structure = sdof_spec(*mode);
-  t.tmd.convective_mass = t.convective_fraction * t.liquid_mass;
-  t.tmd.rigid_mass = (1.0 - t.convective_fraction) * t.liquid_mass + mode->rigid_mass * tanks;
-  t.tmd.convective_omega = cylinder_first_sloshing_omega(R, h, spec.fluid.gravity);
-  set_band(t, *mode);
-  return t;
+  return liquid_as_tmd(*mode, spec.fluid.density * std::numbers::pi * R * R * h * tanks,
+                       cylinder_convective_mass_fraction(R, h), cylinder_first_sloshing_omega(R, h, spec.fluid.gravity),
+                       mode->rigid_mass * tanks);
 }
 
 TankAsTmd tank_as_tmd(const CaseSpec& spec) {
   if (!spec.structure) throw InputError(spec.source, "structure", "the case has no [structure] to put a TMD on");
   const StructureSpec& s = *spec.structure;
-  if (s.tanks < 1)
-    throw InputError(spec.where("structure.tanks"), "structure.tanks",
-                     "tanks = 0: the liquid does not act on the structure, so it has no equivalent TMD");
+  require_tanks(spec, s);
   const TankGeometry tank = make_tank(spec.tank, spec.where("tank.shape"));
   const SloshingMode mode = sloshing_modes(tank, spec.fill.depth, spec.fluid.gravity, 1).front();
   const double width = s.tank_width * s.tanks;
-
-  TankAsTmd t;
-  t.liquid_mass = spec.fluid.density * still_water_area(tank, spec.fill.depth) * width;
-  t.convective_fraction = mode.effective_mass_fraction;
-  t.tmd.structure = sdof_spec(s);
-  t.tmd.convective_mass = t.convective_fraction * t.liquid_mass;
-  t.tmd.rigid_mass = (1.0 - t.convective_fraction) * t.liquid_mass + s.rigid_mass * width;
-  t.tmd.convective_omega = mode.omega;
-  set_band(t, s);
-  return t;
+  return liquid_as_tmd(s, spec.fluid.density * still_water_area(tank, spec.fill.depth) * width,
+                       mode.effective_mass_fraction, mode.omega, s.rigid_mass * width);
 }
 
 nlohmann::json equivalent_tmd_json(const TankAsTmd& t, const std::vector<EquivalentTmdResponse>& responses,
