@@ -34,14 +34,6 @@ std::vector<WallSample3> sample_walls(const PrismTank& tank, double dp, int laye
   return out;
 }
 
-std::vector<WallSample3> extrude_inside(const std::vector<WallSample>& section_walls, const PrismTank& tank, double dp) {
-  std::vector<WallSample3> out;
-  const int n_y = planes_across(tank, dp);
-  for (const WallSample& w : section_walls)
-    for (int k = 0; k < n_y; ++k) out.push_back({at_breadth(w.position, (k + 0.5) * dp), at_breadth(w.normal, 0.0)});
-  return out;
-}
-
 std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth) {
   return on_planes_across(tank, dp, fill_fluid(tank.section, dp, depth));
 }

@@ -59,10 +59,6 @@ struct WallSample3 {
 // lattice continued through the walls.
 std::vector<WallSample3> sample_walls(const PrismTank& tank, double dp, int layers);
 
-// Wall samples of the section (explicit slats, issue 31) on the fill's lattice planes across the
-// breadth, y = (k + 1/2) dp inside it only (the end walls' layers already cover the section there).
-std::vector<WallSample3> extrude_inside(const std::vector<WallSample>& section_walls, const PrismTank& tank, double dp);
-
 // Fluid particles: the section's fill (fill_fluid: lattice points below `depth`, at least dp/2 from
 // the wall) at y = (k + 1/2) dp, k = 0 .. n_y - 1.
 std::vector<Vec3> fill_fluid(const PrismTank& tank, double dp, double depth);

@@ -8,6 +8,7 @@
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/geometry/prism_tank.hpp"
 #include "sloshsph/geometry/screens.hpp"
+#include "sloshsph/sph/neighbours.hpp"
 
 namespace sloshsph {
 namespace {
@@ -205,6 +206,73 @@ static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank
   return sc;
 }
 
+// Where the slat walls of an explicit screen stand in 3D (issue 31). explicit_slat_layout gives them
+// in the section (x, z) as the walls of a vertical screen at x = x_line; a sample at (x, z) goes to
+// origin + s along + (x - x_ref) across + z e_z on each of the plane's lines s (horizontal unit
+// vectors along and across the screen's plane), its normal (n_x, n_z) to n_x across + n_z e_z.
+struct SlatPlane {
+  Vec3 origin, along, across;
+  double x_ref = 0.0;
+  std::vector<double> lines;  // s of each line along the plane
+};
+
+// Lines s = (k + 1/2) spacing, k < count.
+std::vector<double> lines_at(int count, double spacing) {
+  std::vector<double> s;
+  for (int k = 0; k < count; ++k) s.push_back((k + 0.5) * spacing);
+  return s;
+}
+
+// The plane of explicit screen `sc` (resolved: a vertical screen at x_line = sc.from.x in the
+// section): across the breadth (plane_y) on the fill's lattice lines along x; through a segment of
+// the plan, on lines about dp apart along it; otherwise the plane x = x_line, on the lattice lines
+// along y, and its section samples keep their x.
+SlatPlane slat_plane(const ScreenSpec& sc, const TankGeometry& section, double breadth, double dp) {
+  const Vec3 x_axis{1.0, 0.0, 0.0}, y_axis{0.0, 1.0, 0.0};
+  if (sc.plane_y) {
+    const int n_x = static_cast<int>(std::floor((section.x_max - section.x_min) / dp + 1e-9));
+    return {{section.x_min, *sc.plane_y, 0.0}, x_axis, y_axis, sc.from.x, lines_at(n_x, dp)};
+  }
+  if (sc.plan) {
+    const Vec2 a = sc.plan->first, b = sc.plan->second;
+    const double length = norm(b - a);
+    const Vec2 t = (b - a) / length, n = perp(t);
+    const int count = std::max(1, static_cast<int>(std::lround(length / dp)));
+    return {{a.x, a.y, 0.0}, {t.x, t.y, 0.0}, {n.x, n.y, 0.0}, sc.from.x, lines_at(count, length / count)};
+  }
+  return {{}, y_axis, x_axis, 0.0, lines_at(static_cast<int>(std::floor(breadth / dp + 1e-9)), dp)};
+}
+
+// The slat walls of `section_walls` on `plane`'s lines, those for which `inside` holds.
+template <class Inside>
+void add_slat_walls(const std::vector<WallSample>& section_walls, const SlatPlane& plane, Inside inside,
+                           std::vector<WallSample3>& walls) {
+  const Vec3 up{0.0, 0.0, 1.0};
+  for (const WallSample& w : section_walls)
+    for (double s : plane.lines) {
+      const Vec3 at = plane.origin + s * plane.along + (w.position.x - plane.x_ref) * plane.across + w.position.y * up;
+      if (inside(at)) walls.push_back({at, w.normal.x * plane.across + w.normal.y * up});
+    }
+}
+
+// The fluid kept clear of the slats: no particle closer than 0.9 dp to one of walls[first, end).
+void keep_clear_of_slats(const std::vector<WallSample3>& walls, std::size_t first, double dp,
+                                std::vector<Vec3>& fluid) {
+  if (first == walls.size()) return;
+  std::vector<Vec3> slats;
+  for (std::size_t k = first; k < walls.size(); ++k) slats.push_back(walls[k].position);
+  const double reach = 0.9 * dp, reach2 = 0.81 * dp * dp;  // reach2 as clear_of has it
+  BasicCellGrid<3> grid;
+  grid.build(slats, 0, slats.size(), reach);
+  std::vector<Vec3> kept;
+  for (const Vec3& f : fluid) {
+    bool clear = true;
+    grid.for_each_candidate(f, reach, [&](std::uint32_t k) { clear = clear && norm2(f - slats[k]) >= reach2; });
+    if (clear) kept.push_back(f);
+  }
+  fluid.swap(kept);
+}
+
 // An upright cylinder: the fluid on the cubic lattice inside it, its side and bottom walls; the
 // scene's section is the rectangle 2R x height it stands in. Screens (ergun and morison, vertical:
 // the case reader refuses others) are extruded over the chord their plane cuts by the driver.
@@ -215,10 +283,28 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
   auto tank = std::make_shared<TankGeometry>(make_tank(box, spec.where("tank.radius")));
   check_probes_3d(spec, [&cylinder](Vec3 p) { return cylinder.signed_distance(p); }, tank->y_top);
   const double dp = spec.particles.dp;
-  Scene3 scene = three_d_scene(spec, tank, 2.0 * cylinder.radius, spec.fill.depth, fill_fluid(cylinder, dp, spec.fill.depth),
-                               sample_walls(cylinder, dp, spec.particles.wall_layers));
+  std::vector<Vec3> fluid = fill_fluid(cylinder, dp, spec.fill.depth);
+  std::vector<WallSample3> walls = sample_walls(cylinder, dp, spec.particles.wall_layers);
+  // Explicit slats over the chord of their plane: the lines of the plane inside the circle.
+  std::vector<ScreenSpec> screens;
+  std::vector<std::string> warnings;
+  const std::size_t tank_walls = walls.size();
+  for (std::size_t k = 0; k < spec.screens.size(); ++k) {
+    const ScreenSpec sc = resolved_screen(spec, *tank, k);
+    const std::string key = "screens." + std::to_string(k);
+    if (sc.model == ScreenModel::explicit_slats) {
+      SlatLayout layout = explicit_slat_layout(sc, dp, *tank, spec.where(key + ".model"), key);
+      auto inside = [&cylinder](Vec3 q) { return cylinder.from_axis(q) < cylinder.radius; };
+      add_slat_walls(layout.walls, slat_plane(sc, *tank, 2.0 * cylinder.radius, dp), inside, walls);
+      for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
+    }
+    screens.push_back(sc);
+  }
+  keep_clear_of_slats(walls, tank_walls, dp, fluid);
+  Scene3 scene = three_d_scene(spec, tank, 2.0 * cylinder.radius, spec.fill.depth, fluid, walls);
   scene.cylinder = cylinder;
-  for (std::size_t k = 0; k < spec.screens.size(); ++k) scene.screens.push_back(resolved_screen(spec, *tank, k));
+  scene.screens = std::move(screens);
+  scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
   // The fill holds the water of fill.depth (fill_fluid): above the depth at first, it settles into
   // the ring of gaps the square lattice leaves along the round wall.
   return scene;
@@ -233,24 +319,6 @@ static bool clear_of(Vec2 f, const std::vector<WallSample>& solids, double dp) {
   return true;
 }
 
-// Explicit slats across the breadth of a box (issue 31): `section_walls`, the slat walls of a vertical
-// screen at x = x_line in the section (x, z), turned so that x - x_line runs along y from y = plane_y
-// (normals (0, n_x, n_z)), on the fill lattice's lines x = x_min + (i + 1/2) dp along the length; the
-// fluid is kept 0.9 dp clear of them in that turned plane.
-static void add_slats_across(const std::vector<WallSample>& section_walls, double x_line, double plane_y,
-                             const TankGeometry& section, double dp, std::vector<Vec3>& fluid,
-                             std::vector<WallSample3>& walls) {
-  const int n_x = static_cast<int>(std::floor((section.x_max - section.x_min) / dp + 1e-9));
-  for (const WallSample& w : section_walls)
-    for (int i = 0; i < n_x; ++i)
-      walls.push_back({{section.x_min + (i + 0.5) * dp, plane_y + (w.position.x - x_line), w.position.y},
-                       {0.0, w.normal.x, w.normal.y}});
-  std::vector<Vec3> kept;
-  for (const Vec3& f : fluid)
-    if (clear_of({x_line + (f.y - plane_y), f.z}, section_walls, dp)) kept.push_back(f);
-  fluid.swap(kept);
-}
-
 Scene3 build_scene3(const CaseSpec& spec) {
   if (spec.tank.shape == "cylinder") return build_cylinder_scene(spec);
   auto tank = std::make_shared<TankGeometry>(make_tank(spec.tank, spec.where("tank.shape")));
@@ -263,31 +331,24 @@ Scene3 build_scene3(const CaseSpec& spec) {
   std::vector<Vec3> fluid = on_planes_across(prism, dp, section_fluid);
   std::vector<WallSample3> walls = sample_walls(prism, dp, spec.particles.wall_layers);
   // Screens: ergun and morison elements are extruded over the breadth by the driver
-  // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it, or,
-  // across the breadth (plane_y, boxes), the slat walls of the section's vertical screen at x_line
-  // turned into the plane y = plane_y and repeated along the length.
+  // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it, or
+  // turned into the plane y = plane_y or a plane through the plan (slat_plane).
   std::vector<ScreenSpec> screens;
-  std::vector<WallSample> slats;
   std::vector<std::string> warnings;
+  const std::size_t tank_walls = walls.size();
   for (std::size_t k = 0; k < spec.screens.size(); ++k) {
     const ScreenSpec sc = resolved_screen(spec, *tank, k);
     const std::string key = "screens." + std::to_string(k);
     if (sc.model == ScreenModel::explicit_slats) {
       SlatLayout layout = explicit_slat_layout(sc, dp, *tank, spec.where(key + ".model"), key);
-      if (sc.plane_y) add_slats_across(layout.walls, sc.from.x, *sc.plane_y, *tank, dp, fluid, walls);
-      else slats.insert(slats.end(), layout.walls.begin(), layout.walls.end());
+      // A slat of a plane through the plan may reach past the box's wall at an end of the segment.
+      auto inside = [&prism, plan = sc.plan.has_value()](Vec3 q) { return !plan || prism.signed_distance(q) > 0.0; };
+      add_slat_walls(layout.walls, slat_plane(sc, *tank, prism.breadth, dp), inside, walls);
       for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
     }
     screens.push_back(sc);
   }
-  if (!slats.empty()) {
-    const std::vector<WallSample3> extruded = extrude_inside(slats, prism, dp);
-    walls.insert(walls.end(), extruded.begin(), extruded.end());
-    std::vector<Vec3> kept;  // the slats stand on every plane: a particle's distance to them is its section's
-    for (const Vec3& f : fluid)
-      if (clear_of(in_section(f), slats, dp)) kept.push_back(f);
-    fluid.swap(kept);
-  }
+  keep_clear_of_slats(walls, tank_walls, dp, fluid);
   Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
   if (blocks.empty()) {
     add_fill_warning(spec, *tank, section_fluid.size(), scene.warnings);

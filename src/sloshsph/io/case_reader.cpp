@@ -685,7 +685,7 @@ void check_particle_estimate(const CaseSpec& s) {
 }
 
 // A screen through a segment of the plan (plan_from, plan_to): in a box or a cylinder (flat
-// bottoms: the screen stands full height), porous (ergun, morison), both ends inside the tank's plan
+// bottoms: the screen stands full height), porous or explicit, both ends inside the tank's plan
 // (on its wall allowed), at least dp long.
 void check_plan_screen(const CaseSpec& s, const ScreenSpec& sc, const std::string& key) {
   auto fail = [&](const std::string& sub, const std::string& what) {
@@ -693,8 +693,6 @@ void check_plan_screen(const CaseSpec& s, const ScreenSpec& sc, const std::strin
   };
   if (s.tank.shape != "rectangle" && s.tank.shape != "cylinder")
     fail("plan_from", "a screen through a segment of the plan stands in a box (shape = \"rectangle\") or a cylinder");
-  if (sc.model == ScreenModel::explicit_slats)
-    fail("model", "explicit slats in a plane through the plan are not available yet (issue 31): ergun or morison");
   const double tol = 1e-9;
   for (const auto& [sub, q] : {std::pair<const char*, Vec2>{"plan_from", sc.plan->first}, {"plan_to", sc.plan->second}}) {
     const bool inside = s.tank.shape == "cylinder"
@@ -731,7 +729,7 @@ void check_dimensions(const CaseSpec& s) {
                                  "is tank.breadth): remove it");
   const std::string not_yet = " is not available in 3D yet (issue 31); tank.dimensions = 3 runs the ISPH and WCSPH "
                               "schemes with Adami or repulsive walls, translations along x and y, rotations, a 2-DOF structure, "
-                              "porous screens across the breadth, gauges and point pressure probes";
+                              "porous and explicit screens in vertical planes, gauges and point pressure probes";
   if (s.excitation.type == ExcitationType::pitch && (s.excitation.direction.x != 1.0 || s.excitation.direction.y != 0.0))
     fail("excitation.direction", "is the direction of a translation; a rotation turns about 'axis'");
   for (std::size_t k = 0; k < s.screens.size(); ++k) {  // extruded over the breadth, a cylinder's chord or a plan segment
@@ -746,8 +744,6 @@ void check_dimensions(const CaseSpec& s) {
                        "only");
     if (s.tank.shape != "cylinder") continue;
     // In a cylinder: a vertical plane x = c or y = c, over the chord it cuts from the circle.
-    if (sc.model == ScreenModel::explicit_slats)
-      fail(key + ".model", "explicit slats in a cylinder" + not_yet + " (ergun and morison screens are)");
     if (!sc.plane_y && sc.from.x != sc.to.x)
       fail(key + ".from", "a screen in a cylinder is a vertical plane: give 'x' (the plane x = const) or 'y' (y = "
                           "const), or 'from' and 'to' with the same x");

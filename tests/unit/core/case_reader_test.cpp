@@ -564,7 +564,7 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   EXPECT_NE(resolved_case_toml(read_case_text(kMinimal, "case.toml", {"output.moment_point=[0.0, 0.0]"}))
                 .find("moment_point = [ 0.0, 0.0 ]"),
             std::string::npos);
-  // Screens through a segment of the plan (any angle): 3D, box or cylinder, porous, ends inside.
+  // Screens through a segment of the plan (any angle): 3D, box or cylinder, porous or explicit, ends inside.
   const CaseSpec diagonal =
       read_case_text(box + "\n[[screens]]\nname = \"d\"\nplan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nsolidity = 0.4\n",
                      "case.toml", {});
@@ -577,9 +577,12 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
                "inside the tank");
   expect_error(box + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nx = 0.1\n", {}, "screens.0.x",
                "plan_from");
-  expect_error(box + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nmodel = \"explicit\"\n"
-                                   "slat_height = 0.01\nslat_gap = 0.01\n",
-               {}, "screens.0.model", "explicit");
+  EXPECT_EQ(read_case_text(box + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\nmodel = \"explicit\"\n"
+                                                "slat_height = 0.01\nslat_gap = 0.01\n",
+                           "case.toml", {})
+                .screens.at(0)
+                .model,
+            ScreenModel::explicit_slats);
   expect_error(kMinimal + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\n", {}, "screens.0.plan_from",
                "3D");
   // Fill blocks in 3D: the section's rectangle over a box's or prism's breadth (settled depth from
@@ -591,7 +594,7 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml") +
                    "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.1]\n",
                {}, "fill.blocks", "cylinder");
-  // Screens in a cylinder (R = 0.15 m, dp = 10 mm): vertical planes x or y = const, ergun or morison,
+  // Screens in a cylinder (R = 0.15 m, dp = 10 mm): vertical planes x or y = const, porous or explicit,
   // at least dp inside the wall (their particles: ScreenDrag.ScreenInACylinderSpansTheChordOfItsPlane).
   const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
   const auto with_screen = [&cylinder](const std::string& keys) {
@@ -599,8 +602,11 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   };
   EXPECT_EQ(read_case_text(with_screen("x = 0.15\nmodel = \"morison\"\n"), "case.toml", {}).screens.size(), 1u);
   EXPECT_TRUE(read_case_text(with_screen("y = 0.1\n"), "case.toml", {}).screens.at(0).plane_y.has_value());
-  expect_error(with_screen("x = 0.15\nmodel = \"explicit\"\nslat_height = 0.01\nslat_gap = 0.01\n"), {},
-               "screens.0.model", "cylinder");
+  EXPECT_EQ(read_case_text(with_screen("x = 0.15\nmodel = \"explicit\"\nslat_height = 0.01\nslat_gap = 0.01\n"),
+                           "case.toml", {})
+                .screens.at(0)
+                .model,
+            ScreenModel::explicit_slats);
   expect_error(with_screen("from = [0.1, 0.0]\nto = [0.2, 0.3]\n"), {}, "screens.0.from", "vertical plane");
   expect_error(with_screen("x = 0.005\n"), {}, "screens.0.x", "at least dp inside");
   expect_error(with_screen("y = 0.295\n"), {}, "screens.0.y", "at least dp inside");

@@ -345,9 +345,13 @@ TEST(ThreeD, SpsClosureOfAPlaneFlowIsThePlaneOne) {
 }  // namespace sloshsph
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <string>
 
 #include "sloshsph/geometry/scene.hpp"
+#include "sloshsph/geometry/screens.hpp"
+#include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/io/case_reader.hpp"
 
 namespace sloshsph {
@@ -402,6 +406,103 @@ TEST(ThreeD, ExplicitSlatsAcrossTheBreadthMirrorThoseAcrossTheLength) {
   worst = 0.0;
   for (std::size_t i = 0; i < slats_a.size(); ++i) worst = std::max(worst, norm(slats_a[i] - slats_b[i]));
   EXPECT_LT(worst, 1e-12);
+}
+
+// The wall particles of a scene that are not the tank's: those the same case without its screen lacks.
+std::vector<Vec3> slat_walls_of(const Scene3& with, const Scene3& without) {
+  const BasicParticles<3>& p = with.particles;
+  const std::size_t tank_walls = without.particles.size() - without.particles.n_fluid;
+  std::vector<Vec3> out(p.position.begin() + static_cast<std::ptrdiff_t>(p.n_fluid + tank_walls), p.position.end());
+  return out;
+}
+
+// The closest any fluid particle of `scene` comes to any of `slats` (brute force).
+double closest_fluid_to(const Scene3& scene, const std::vector<Vec3>& slats) {
+  double closest = 1e9;
+  for (std::size_t i = 0; i < scene.particles.n_fluid; ++i)
+    for (const Vec3& q : slats) closest = std::min(closest, norm(scene.particles.position[i] - q));
+  return closest;
+}
+
+// Issue 31, section 2: explicit slats in an upright cylinder (R = 0.15 m, dp = 10 mm). A screen in
+// the plane x = 0.12 m is the section's slat walls (explicit_slat_walls) on every lattice line y =
+// (j + 1/2) dp inside the circle: each slat particle keeps its section position (x, z), stands
+// inside the circle, and the count is the section's walls times the lines whose point lies inside
+// (counted here from the circle). The same screen in the plane y = 0.12 m is its mirror image (x <->
+// y, to 1e-12 m). No fluid particle is closer than 0.9 dp to a slat particle (as in 2D).
+TEST(ThreeD, ExplicitSlatsInACylinderSpanTheChordOfTheirPlane) {
+  const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
+  const std::string slats = "\n[[screens]]\nname = \"S\"\nslat_height = 0.02\nslat_gap = 0.02\nthickness = 0.004\n"
+                            "model = \"explicit\"\n";
+  const CaseSpec spec_x = read_case_text(cylinder + slats + "x = 0.12\n", "x.toml", {});
+  const Scene3 bare = build_scene3(read_case_text(cylinder, "bare.toml", {}));
+  const Scene3 at_x = build_scene3(spec_x);
+  const Scene3 at_y = build_scene3(read_case_text(cylinder + slats + "y = 0.12\n", "y.toml", {}));
+  const std::vector<Vec3> walls_x = slat_walls_of(at_x, bare), walls_y = slat_walls_of(at_y, bare);
+  const double R = 0.15, dp = 0.01;
+  TankSpec section_spec = spec_x.tank;
+  section_spec.shape = "rectangle";
+  section_spec.length = 2.0 * R;
+  ScreenSpec screen = spec_x.screens.at(0);
+  screen.from = {0.12, 0.0};
+  screen.to = {0.12, section_spec.height};
+  const std::vector<WallSample> section = explicit_slat_walls(screen, dp, make_tank(section_spec, "test"));
+  std::size_t expected = 0;
+  for (const WallSample& w : section)
+    for (int j = 0; j < 30; ++j)
+      if (std::hypot(w.position.x - R, (j + 0.5) * dp - R) < R) ++expected;
+  EXPECT_EQ(walls_x.size(), expected);
+  ASSERT_GT(walls_x.size(), section.size());
+  for (const Vec3& q : walls_x) {
+    EXPECT_LT(std::hypot(q.x - R, q.y - R), R);
+    EXPECT_NEAR(q.x, 0.12, 0.5 * 0.004 + 1e-12);
+  }
+  ASSERT_EQ(walls_x.size(), walls_y.size());
+  auto key = [](Vec3 r) { return std::array<long, 3>{std::lround(r.x * 1e6), std::lround(r.y * 1e6), std::lround(r.z * 1e6)}; };
+  std::vector<std::array<long, 3>> mirrored_x, keys_y;
+  for (const Vec3& q : walls_x) mirrored_x.push_back(key({q.y, q.x, q.z}));
+  for (const Vec3& q : walls_y) keys_y.push_back(key(q));
+  std::sort(mirrored_x.begin(), mirrored_x.end());
+  std::sort(keys_y.begin(), keys_y.end());
+  EXPECT_EQ(mirrored_x, keys_y);
+  EXPECT_GE(closest_fluid_to(at_x, walls_x), 0.9 * dp);
+  EXPECT_GE(closest_fluid_to(at_y, walls_y), 0.9 * dp);
+  EXPECT_LT(at_x.particles.n_fluid, bare.particles.n_fluid);
+}
+
+// Explicit slats through a segment of the plan: in the square box of square_box (dp = 20 mm), a
+// screen on the diagonal from (0.1, 0.1) to (0.5, 0.5). Its slat particles lie within half the
+// slat thickness of the segment's vertical plane and over the segment's length; their number is the
+// section's walls times round(length / dp) lines; the set is its own mirror image about the
+// diagonal (x <-> y, to 1e-9 m: the thickness offsets come in pairs); no fluid particle is closer
+// than 0.9 dp to one.
+TEST(ThreeD, ExplicitSlatsThroughThePlanStandInTheSegmentsPlane) {
+  const Scene3 bare = build_scene3(read_case_text(square_box("x = 0.3").substr(0, square_box("x = 0.3").find("[[screens]]")),
+                                                  "bare.toml", {}));
+  const CaseSpec spec = read_case_text(square_box("plan_from = [0.1, 0.1]\nplan_to = [0.5, 0.5]"), "d.toml", {});
+  const Scene3 diagonal = build_scene3(spec);
+  const std::vector<Vec3> walls = slat_walls_of(diagonal, bare);
+  const double length = std::sqrt(2.0) * 0.4, dp = 0.02;
+  ScreenSpec screen = spec.screens.at(0);
+  screen.from = {0.3, 0.0};
+  screen.to = {0.3, 0.3};
+  TankSpec section_spec = spec.tank;
+  const std::vector<WallSample> section = explicit_slat_walls(screen, dp, make_tank(section_spec, "test"));
+  EXPECT_EQ(walls.size(), section.size() * static_cast<std::size_t>(std::lround(length / dp)));
+  const double c = std::sqrt(0.5);
+  std::vector<std::array<long, 3>> keys, mirrored;
+  for (const Vec3& q : walls) {
+    const double along = (q.x - 0.1) * c + (q.y - 0.1) * c, across = -(q.x - 0.1) * c + (q.y - 0.1) * c;
+    EXPECT_NEAR(across, 0.0, 0.5 * 0.004 + 1e-12);
+    EXPECT_GT(along, 0.0);
+    EXPECT_LT(along, length);
+    keys.push_back({std::lround(q.x * 1e9), std::lround(q.y * 1e9), std::lround(q.z * 1e9)});
+    mirrored.push_back({std::lround(q.y * 1e9), std::lround(q.x * 1e9), std::lround(q.z * 1e9)});
+  }
+  std::sort(keys.begin(), keys.end());
+  std::sort(mirrored.begin(), mirrored.end());
+  EXPECT_EQ(keys, mirrored);
+  EXPECT_GE(closest_fluid_to(diagonal, walls), 0.9 * dp);
 }
 
 }  // namespace
