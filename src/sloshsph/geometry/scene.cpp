@@ -273,9 +273,33 @@ void keep_clear_of_slats(const std::vector<WallSample3>& walls, std::size_t firs
   fluid.swap(kept);
 }
 
+// The case's screens, resolved (ergun and morison elements are extruded by the driver,
+// physics/porous.hpp), with the slat walls of the explicit ones added to `walls` (those for which
+// inside(q, screen) holds) and the fluid kept clear of them; their layouts' warnings in `warnings`.
+template <class Inside>
+std::vector<ScreenSpec> place_screens(const CaseSpec& spec, const TankGeometry& section, double breadth, Inside inside,
+                                      std::vector<Vec3>& fluid, std::vector<WallSample3>& walls,
+                                      std::vector<std::string>& warnings) {
+  const double dp = spec.particles.dp;
+  std::vector<ScreenSpec> screens;
+  const std::size_t tank_walls = walls.size();
+  for (std::size_t k = 0; k < spec.screens.size(); ++k) {
+    const ScreenSpec sc = resolved_screen(spec, section, k);
+    const std::string key = "screens." + std::to_string(k);
+    if (sc.model == ScreenModel::explicit_slats) {
+      SlatLayout layout = explicit_slat_layout(sc, dp, section, spec.where(key + ".model"), key);
+      add_slat_walls(layout.walls, slat_plane(sc, section, breadth, dp), [&](Vec3 q) { return inside(q, sc); }, walls);
+      for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
+    }
+    screens.push_back(sc);
+  }
+  keep_clear_of_slats(walls, tank_walls, dp, fluid);
+  return screens;
+}
+
 // An upright cylinder: the fluid on the cubic lattice inside it, its side and bottom walls; the
-// scene's section is the rectangle 2R x height it stands in. Screens (ergun and morison, vertical:
-// the case reader refuses others) are extruded over the chord their plane cuts by the driver.
+// scene's section is the rectangle 2R x height it stands in. Porous screens (vertical planes) are
+// extruded over the chord their plane cuts by the driver; explicit slats stand on it (place_screens).
 Scene3 build_cylinder_scene(const CaseSpec& spec) {
   const CylinderTank cylinder{spec.tank.radius, spec.tank.height};
   TankSpec box = spec.tank;
@@ -286,21 +310,9 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
   std::vector<Vec3> fluid = fill_fluid(cylinder, dp, spec.fill.depth);
   std::vector<WallSample3> walls = sample_walls(cylinder, dp, spec.particles.wall_layers);
   // Explicit slats over the chord of their plane: the lines of the plane inside the circle.
-  std::vector<ScreenSpec> screens;
   std::vector<std::string> warnings;
-  const std::size_t tank_walls = walls.size();
-  for (std::size_t k = 0; k < spec.screens.size(); ++k) {
-    const ScreenSpec sc = resolved_screen(spec, *tank, k);
-    const std::string key = "screens." + std::to_string(k);
-    if (sc.model == ScreenModel::explicit_slats) {
-      SlatLayout layout = explicit_slat_layout(sc, dp, *tank, spec.where(key + ".model"), key);
-      auto inside = [&cylinder](Vec3 q) { return cylinder.from_axis(q) < cylinder.radius; };
-      add_slat_walls(layout.walls, slat_plane(sc, *tank, 2.0 * cylinder.radius, dp), inside, walls);
-      for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
-    }
-    screens.push_back(sc);
-  }
-  keep_clear_of_slats(walls, tank_walls, dp, fluid);
+  auto inside = [&cylinder](Vec3 q, const ScreenSpec&) { return cylinder.from_axis(q) < cylinder.radius; };
+  std::vector<ScreenSpec> screens = place_screens(spec, *tank, 2.0 * cylinder.radius, inside, fluid, walls, warnings);
   Scene3 scene = three_d_scene(spec, tank, 2.0 * cylinder.radius, spec.fill.depth, fluid, walls);
   scene.cylinder = cylinder;
   scene.screens = std::move(screens);
@@ -330,25 +342,12 @@ Scene3 build_scene3(const CaseSpec& spec) {
       blocks.empty() ? fill_fluid(*tank, dp, spec.fill.depth) : fill_blocks(*tank, dp, blocks);
   std::vector<Vec3> fluid = on_planes_across(prism, dp, section_fluid);
   std::vector<WallSample3> walls = sample_walls(prism, dp, spec.particles.wall_layers);
-  // Screens: ergun and morison elements are extruded over the breadth by the driver
-  // (physics/porous.hpp); explicit slats are the section's slat walls on every plane across it, or
-  // turned into the plane y = plane_y or a plane through the plan (slat_plane).
-  std::vector<ScreenSpec> screens;
+  // Explicit slats: the section's slat walls on every plane across the breadth, or turned into the
+  // plane y = plane_y or a plane through the plan (slat_plane); a slat of a plane through the plan
+  // may reach past the box's wall at an end of the segment.
   std::vector<std::string> warnings;
-  const std::size_t tank_walls = walls.size();
-  for (std::size_t k = 0; k < spec.screens.size(); ++k) {
-    const ScreenSpec sc = resolved_screen(spec, *tank, k);
-    const std::string key = "screens." + std::to_string(k);
-    if (sc.model == ScreenModel::explicit_slats) {
-      SlatLayout layout = explicit_slat_layout(sc, dp, *tank, spec.where(key + ".model"), key);
-      // A slat of a plane through the plan may reach past the box's wall at an end of the segment.
-      auto inside = [&prism, plan = sc.plan.has_value()](Vec3 q) { return !plan || prism.signed_distance(q) > 0.0; };
-      add_slat_walls(layout.walls, slat_plane(sc, *tank, prism.breadth, dp), inside, walls);
-      for (const std::string& w : layout.warnings) warnings.push_back("screen '" + sc.name + "': " + w);
-    }
-    screens.push_back(sc);
-  }
-  keep_clear_of_slats(walls, tank_walls, dp, fluid);
+  auto inside = [&prism](Vec3 q, const ScreenSpec& sc) { return !sc.plan || prism.signed_distance(q) > 0.0; };
+  std::vector<ScreenSpec> screens = place_screens(spec, *tank, prism.breadth, inside, fluid, walls, warnings);
   Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
   if (blocks.empty()) {
     add_fill_warning(spec, *tank, section_fluid.size(), scene.warnings);
