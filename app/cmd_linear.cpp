@@ -1,8 +1,11 @@
-// sloshsph linear CASE [--modes N] [--damping auto|none|boundary-layer|ZETA] [--out FILE]
-//                      [--compare RUN_DIR] [--periods N] [--set KEY=VALUE]...
+// sloshsph linear CASE [--modes N] [--damping auto|none|boundary-layer|ZETA] [--screens drag|none]
+//                      [--out FILE] [--compare RUN_DIR] [--periods N] [--set KEY=VALUE]...
+//                      [--beta RATIOS [--response-out FILE]]
 // The linear modal solution from rest of a case's tank under its horizontal base motion
-// (run/linear_case.hpp), written as a time series with the SPH run's column names, and, with
-// --compare, the amplitude envelope of an SPH run's gauges against it, period by period.
+// (run/linear_case.hpp), with the drag of its vertical screens in a rectangular tank, written as a
+// time series with the SPH run's column names, and, with --compare, the amplitude envelope of an
+// SPH run's gauges against it, period by period. With --beta: its steady-state response at each
+// frequency ratio, in the columns of a sweep's frequency_response.csv.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +17,7 @@
 #include "sloshsph/analysis/stats.hpp"
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/run/linear_case.hpp"
+#include "sloshsph/run/sweep.hpp"
 
 namespace sloshsph::app {
 namespace {
@@ -25,8 +29,29 @@ void print_modes(const CaseSpec& spec, const LinearCase& r) {
   for (std::size_t n = 0; n < r.modes.size(); ++n)
     std::printf("%6zu %14.6f %12.6f %12.5f %12.5f\n", n + 1, r.modes[n].omega,
                 2.0 * std::numbers::pi / r.modes[n].omega, 100.0 * r.damping[n], r.modes[n].horizontal_forcing);
+  for (const LinearScreen& s : r.screens)
+    std::printf("screen at x = %.4g m over z = %.4g to %.4g m: loss coefficient C_l = %.4g, Darcy term r = %.4g Pa s/m\n",
+                s.x, s.z_from, s.z_to, s.loss_coefficient, s.linear_resistance);
   for (const std::string& part : r.ignored)
-    std::printf("note: the case's %s are not part of the linear model (a clean tank)\n", part.c_str());
+    std::printf("note: not part of the linear model: %s\n", part.c_str());
+}
+
+int frequency_response(const std::string& case_path, const std::vector<std::string>& sets, const std::string& betas,
+                       const LinearCaseOptions& options, const std::string& out) {
+  const CaseSpec spec = load_case(case_path, sets);
+  const LinearFrequencyResponse response = linear_frequency_response(case_path, sets, parse_beta_range(betas), options);
+  print_modes(spec, response.model);
+  const std::vector<LinearFrequencyPoint>& points = response.points;
+  std::vector<std::string> gauges;
+  for (const GaugeSpec& g : spec.gauges) gauges.push_back(g.name);
+  write_linear_frequency_csv(out, points, gauges);
+  std::printf("%10s %14s %14s %14s\n", "beta", "omega [rad/s]", "eta_max [mm]", "eta_min [mm]");
+  for (const LinearFrequencyPoint& p : points) {
+    const ResponseValue* v = gauges.empty() ? nullptr : p.response.find("eta:" + gauges.front());
+    std::printf("%10.4f %14.5f %14.4f %14.4f\n", p.beta, p.omega, v ? 1e3 * v->avg_max : NAN, v ? 1e3 * v->avg_min : NAN);
+  }
+  std::printf("wrote %s (%zu frequency ratios)\n", out.c_str(), points.size());
+  return 0;
 }
 
 // The period of the comparison windows: the excitation's, or mode 1's for a motion without one.
@@ -74,7 +99,8 @@ int compare_with_run(const CaseSpec& spec, const LinearCase& r, const std::strin
 
 Command add_linear_command(CLI::App& app) {
   struct Options {
-    std::string case_path, out = "linear.csv", compare;
+    std::string case_path, out = "linear.csv", compare, screens = "drag", betas,
+        response_out = "linear_frequency_response.csv";
     std::vector<std::string> sets;
     LinearCaseOptions linear;
     int periods = 8;
@@ -89,7 +115,17 @@ Command add_linear_command(CLI::App& app) {
                   "Modal damping: auto (boundary-layer for a rectangle, none otherwise; the default), none, "
                   "boundary-layer (laminar Stokes layers and bulk, clean rectangular tank), or a ratio for every "
                   "mode (e.g. 0.005)");
+  sub->add_option("--screens", o->screens,
+                  "drag (the default): the pressure loss of the case's vertical screens in a rectangular tank "
+                  "acts on the modes; none: a clean tank")
+      ->check(CLI::IsMember({"drag", "none"}));
   sub->add_option("--out", o->out, "Time series to write (default linear.csv): time, x_base, eta:<gauge>, F_w, F_sw");
+  sub->add_option("--beta", o->betas,
+                  "Frequency ratios A:B:N, a,b,c or one value: the steady-state response at each (the case's "
+                  "harmonic excitation), written to --response-out instead of the time series");
+  sub->add_option("--response-out", o->response_out,
+                  "With --beta: the table to write (default linear_frequency_response.csv; the columns of a sweep's "
+                  "frequency_response.csv)");
   sub->add_option("--compare", o->compare,
                   "A run directory of the same case: print the amplitude of each gauge in each period against "
                   "the linear one");
@@ -97,6 +133,8 @@ Command add_linear_command(CLI::App& app) {
       ->check(CLI::Range(1, 100000));
   add_set_option(sub, o->sets);
   return {sub, [o]() {
+            o->linear.screens = o->screens == "drag";
+            if (!o->betas.empty()) return frequency_response(o->case_path, o->sets, o->betas, o->linear, o->response_out);
             const CaseSpec spec = load_case(o->case_path, o->sets);
             const LinearCase r = linear_case_response(spec, o->linear);
             print_modes(spec, r);

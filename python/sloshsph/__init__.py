@@ -38,19 +38,22 @@ def modes(case, count=4, tank_damping=(), tank_frequency_scale=1.0):
     return _json.loads(text)
 
 
-def linear(case, modes=10, damping="auto"):
+def linear(case, modes=10, damping="auto", screens=True):
     """The linear modal solution from rest of the case's tank under its horizontal base motion, as
     ``sloshsph linear`` writes it: {"series": {"time", "eta:<gauge>"..., "F_w", "F_sw"} (lists, every
     ``output.sample_interval`` to ``time.end``), "modes": [{"omega", "zeta", "horizontal_forcing"}, ...],
-    "damping_model", "ignored"}. ``damping`` is "auto" (the laminar boundary layers of a clean
+    "damping_model", "screens": [{"x", "z_from", "z_to", "loss_coefficient", "linear_resistance"}, ...],
+    "ignored"}. ``damping`` is "auto" (the laminar boundary layers of a clean
     rectangular tank, none for other sections), "none", "boundary-layer", or a ratio for every mode
-    (a number). Raises CaseError for a pitch, a tank on a [structure], or a damping it cannot use."""
+    (a number). ``screens``: the pressure loss of the case's vertical screens in a rectangular tank
+    acts on the modes (``--screens drag``); False: a clean tank (``--screens none``). Raises
+    CaseError for a pitch, a tank on a [structure], or a damping it cannot use."""
     c = as_case(case)
     if not 1 <= int(modes) <= 50:
         raise ValueError(f"modes must be in 1..50, not {modes!r}")
     if not isinstance(damping, str):
         damping = repr(float(damping))
-    return _core.linear(c._text, c.source, c.name, c.overrides, int(modes), damping)
+    return _core.linear(c._text, c.source, c.name, c.overrides, int(modes), damping, bool(screens))
 
 
 def tune(case, target_omega, mass=None):

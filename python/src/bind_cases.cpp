@@ -74,9 +74,9 @@ void bind_cases(py::module_& m) {
   m.def(
       "linear",
       [](const std::string& text, const std::string& source, const std::string& name,
-         const std::vector<std::string>& overrides, int modes, const std::string& damping) {
+         const std::vector<std::string>& overrides, int modes, const std::string& damping, bool screens) {
         const CaseSpec spec = load_case(text, source, name, overrides);
-        const LinearCase r = linear_case_response(spec, LinearCaseOptions{modes, damping});
+        const LinearCase r = linear_case_response(spec, LinearCaseOptions{modes, damping, screens});
         py::dict series;
         series["time"] = r.response.time;
         for (std::size_t g = 0; g < r.gauge_names.size(); ++g) series[("eta:" + r.gauge_names[g]).c_str()] = r.response.elevation[g];
@@ -94,11 +94,22 @@ void bind_cases(py::module_& m) {
         out["series"] = series;
         out["modes"] = mode_list;
         out["damping_model"] = r.damping_model;
+        py::list screen_list;
+        for (const LinearScreen& s : r.screens) {
+          py::dict d;
+          d["x"] = s.x;
+          d["z_from"] = s.z_from;
+          d["z_to"] = s.z_to;
+          d["loss_coefficient"] = s.loss_coefficient;
+          d["linear_resistance"] = s.linear_resistance;
+          screen_list.append(d);
+        }
+        out["screens"] = screen_list;
         out["ignored"] = r.ignored;
         return out;
       },
       py::arg("text"), py::arg("source"), py::arg("name"), py::arg("overrides"), py::arg("modes"),
-      py::arg("damping"), "`sloshsph linear` as a dict (run/linear_case.hpp).");
+      py::arg("damping"), py::arg("screens"), "`sloshsph linear` as a dict (run/linear_case.hpp).");
   m.def(
       "tune",
       [](const std::string& text, const std::string& source, const std::string& name,

@@ -107,3 +107,10 @@ def test_linear_matches_the_program(tmp_path):
         sloshsph.linear(os.path.join(CASES, "shao_pitch.toml"))
     with pytest.raises(sloshsph.CaseError, match="is not auto, none, boundary-layer"):
         sloshsph.linear(path, damping="lots")
+    # The Tait tank's two Ergun screens act on the modes unless screens=False (a clean tank).
+    tait = os.path.join(CASES, "tait2005_screens.toml")
+    screened = sloshsph.linear(tait, screens=True, modes=3)
+    assert [round(s["x"], 4) for s in screened["screens"]] == [0.3864, 0.5796]
+    assert screened["screens"][0]["loss_coefficient"] == pytest.approx(1.05, rel=0.01)
+    clean = sloshsph.linear(tait, screens=False, modes=3)
+    assert clean["screens"] == [] and "screens" in clean["ignored"][0]

@@ -22,6 +22,7 @@ std::vector<double> modal_accelerations(const LinearResponseInput& in, double a,
     const double zeta = n < in.damping.size() ? in.damping[n] : 0.0;
     acc[n] = -in.modes[n].horizontal_forcing * a - 2.0 * zeta * w * v[n] - w * w * q[n];
   }
+  if (in.modal_drag) in.modal_drag(v, acc);
   return acc;
 }
 

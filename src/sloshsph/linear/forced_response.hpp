@@ -29,6 +29,9 @@ struct LinearResponseInput {
   std::vector<double> gauge_x;           // m, tank coordinates of the elevation gauges
   double end_time = 0.0;                 // s
   double sample_interval = 0.0;          // s, > 0
+  // Optional: adds to acceleration[n] the q_n'' of forces that depend on the modal velocities q'
+  // (the screens' pressure loss, linear/screen_drag.hpp); empty: a clean tank.
+  std::function<void(const std::vector<double>& velocity, std::vector<double>& acceleration)> modal_drag;
 };
 
 struct LinearResponse {

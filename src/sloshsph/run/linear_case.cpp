@@ -1,12 +1,20 @@
 #include "sloshsph/run/linear_case.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <numbers>
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/geometry/tank.hpp"
+#include "sloshsph/io/case_reader.hpp"
 #include "sloshsph/io/csv_writer.hpp"
+#include "sloshsph/linear/screen_drag.hpp"
 #include "sloshsph/physics/excitation.hpp"
+#include "sloshsph/physics/porous.hpp"
+#include "sloshsph/run/simulation.hpp"
+#include "sloshsph/run/sweep.hpp"
 
 namespace sloshsph {
 namespace {
@@ -54,6 +62,54 @@ std::vector<double> modal_damping(const CaseSpec& spec, const std::vector<Sloshi
   return zeta;
 }
 
+// The pressure-loss law of a screen of the case (physics/porous.hpp): morison its C_l (given, or
+// from the solidity by Baines & Peterson), explicit slats the C_l of their solidity, ergun the
+// inertial coefficient of its Ergun equation and its Darcy term t mu / K (grain diameter dp_sc).
+void set_loss_law(const CaseSpec& spec, const ScreenSpec& sc, LinearScreen& out) {
+  if (sc.model == ScreenModel::ergun) {
+    const double porosity = 1.0 - sc.solidity;
+    const double grain = sc.spacing > 0.0 ? sc.spacing : spec.particles.dp;
+    const double permeability = kozeny_carman_permeability(porosity, grain);
+    out.loss_coefficient = ergun_inertial_loss_coefficient(permeability, porosity, sc.thickness);
+    out.linear_resistance = sc.thickness * spec.fluid.density * spec.fluid.viscosity / permeability;
+  } else if (sc.model == ScreenModel::morison && sc.loss_coefficient > 0.0) {
+    out.loss_coefficient = sc.loss_coefficient;
+  } else {
+    out.loss_coefficient = slat_screen_loss_coefficient(sc.solidity);
+  }
+}
+
+// The case's vertical screens in the still water of a rectangle, as the linear model takes them
+// (linear/screen_drag.hpp); what it cannot take is named in `ignored`.
+std::vector<LinearScreen> linear_screens(const CaseSpec& spec, const TankGeometry& tank,
+                                         std::vector<std::string>& ignored) {
+  std::vector<LinearScreen> out;
+  for (const ScreenSpec& sc : spec.screens) {
+    const std::string name = "screen '" + sc.name + "'";
+    if (spec.tank.shape != "rectangle") {
+      ignored.push_back(name + " (the screens' drag is modelled in a rectangular tank only)");
+      continue;
+    }
+    if (!sc.full_height && sc.from.x != sc.to.x) {
+      ignored.push_back(name + " (not vertical)");
+      continue;
+    }
+    LinearScreen ls;
+    ls.x = sc.from.x - tank.x_min;
+    const double low = sc.full_height ? 0.0 : std::min(sc.from.y, sc.to.y) - tank.y_bottom;
+    const double high = sc.full_height ? spec.fill.depth : std::max(sc.from.y, sc.to.y) - tank.y_bottom;
+    ls.z_from = std::max(low, 0.0);
+    ls.z_to = std::min(high, spec.fill.depth);
+    if (!(ls.z_to > ls.z_from) || !(ls.x > 0.0 && ls.x < spec.tank.length)) {
+      ignored.push_back(name + " (not in the still water)");
+      continue;
+    }
+    set_loss_law(spec, sc, ls);
+    out.push_back(ls);
+  }
+  return out;
+}
+
 }  // namespace
 
 LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& options) {
@@ -62,8 +118,16 @@ LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& o
   LinearCase out;
   out.modes = sloshing_modes(tank, spec.fill.depth, spec.fluid.gravity, options.modes);
   out.damping = modal_damping(spec, out.modes, options.damping, out.damping_model);
-  if (!spec.screens.empty()) out.ignored.push_back("screens");
   if (!spec.plates.empty()) out.ignored.push_back("plates");
+  std::shared_ptr<const RectangularScreenDrag> drag;
+  if (!spec.screens.empty() && !options.screens) {
+    out.ignored.push_back("screens (--screens none)");
+  } else if (!spec.screens.empty()) {
+    out.screens = linear_screens(spec, tank, out.ignored);
+    if (!out.screens.empty())
+      drag = std::make_shared<const RectangularScreenDrag>(spec.tank.length, spec.fill.depth, spec.fluid.density,
+                                                           out.screens, static_cast<int>(out.modes.size()));
+  }
 
   auto base = std::make_shared<BaseMotionSource>(spec.excitation, spec.time.end);
   LinearResponseInput in;
@@ -78,6 +142,8 @@ LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& o
   }
   in.end_time = spec.time.end;
   in.sample_interval = spec.output.sample_interval;
+  if (drag)
+    in.modal_drag = [drag](const std::vector<double>& v, std::vector<double>& acc) { drag->add_accelerations(v, acc); };
   out.response = linear_response_from_rest(in);
   for (double t : out.response.time) out.base_displacement.push_back(base->at(t).displacement.x);
   return out;
@@ -95,6 +161,76 @@ void write_linear_csv(const std::string& path, const LinearCase& result) {
     for (const std::vector<double>& eta : r.elevation) row.push_back(eta[k]);
     row.push_back(r.wall_force[k]);
     row.push_back(r.sloshing_force[k]);
+    csv.write_row(row);
+  }
+}
+
+namespace {
+
+// The steady-state response of one linear solution, as run_case analyses a run's.
+Response linear_steady_state(const CaseSpec& spec, const LinearCase& r) {
+  std::vector<std::string> names{"time", "x_base"}, units{"s", "m"};
+  std::vector<std::vector<double>> columns{r.response.time, r.base_displacement};
+  for (std::size_t g = 0; g < r.gauge_names.size(); ++g) {
+    names.push_back("eta:" + r.gauge_names[g]);
+    units.push_back("m");
+    columns.push_back(r.response.elevation[g]);
+  }
+  names.insert(names.end(), {"F_w", "F_sw"});
+  units.insert(units.end(), {"N/m", "N/m"});
+  columns.push_back(r.response.wall_force);
+  columns.push_back(r.response.sloshing_force);
+  ResponseOptions o;
+  o.period = 2.0 * std::numbers::pi / spec.excitation.omega;
+  o.cycles = spec.output.response_cycles;
+  o.cutoff_hz = spec.output.lowpass_hz;
+  o.water_mass = spec.fluid.density * spec.tank.length * spec.fill.depth;
+  o.amplitude = spec.excitation.amplitude;
+  return steady_state_response(names, units, columns, o);
+}
+
+}  // namespace
+
+LinearFrequencyResponse linear_frequency_response(const std::string& case_path, const std::vector<std::string>& sets,
+                                                  const std::vector<double>& betas, const LinearCaseOptions& options) {
+  const CaseSpec spec = read_case_file(case_path, sets);
+  if (spec.excitation.type != ExcitationType::harmonic)
+    throw InputError(spec.where("excitation.type"), "excitation.type",
+                     "a linear frequency response needs a harmonic excitation");
+  LinearFrequencyResponse out;
+  for (const SweepPoint& point : plan_sweep(spec, betas, {}, ".")) {
+    std::vector<std::string> point_sets = sets;
+    point_sets.insert(point_sets.end(), point.overrides.begin(), point.overrides.end());
+    const CaseSpec at = resolve_case(read_case_file(case_path, point_sets));
+    LinearCase r = linear_case_response(at, options);
+    out.points.push_back({point.beta, at.excitation.omega, linear_steady_state(at, r)});
+    if (out.points.size() == 1) {
+      r.response = {};
+      r.base_displacement.clear();
+      out.model = std::move(r);
+    }
+  }
+  return out;
+}
+
+void write_linear_frequency_csv(const std::string& path, const std::vector<LinearFrequencyPoint>& points,
+                                const std::vector<std::string>& gauge_names) {
+  std::vector<std::string> columns{"beta", "omega", "eta_max", "eta_min", "F_sw_max", "F_sw_min", "energy_per_cycle",
+                                   "F_w_max", "F_w_min"};
+  for (const std::string& g : gauge_names) columns.insert(columns.end(), {"eta_max:" + g, "eta_min:" + g});
+  CsvWriter csv(path, columns);
+  for (const LinearFrequencyPoint& p : points) {
+    auto extremes = [&p](const std::string& name, std::vector<double>& row) {
+      const ResponseValue* v = p.response.find(name);
+      row.push_back(v ? v->avg_max : NAN);
+      row.push_back(v ? v->avg_min : NAN);
+    };
+    std::vector<double> row{p.beta, p.omega};
+    extremes(gauge_names.empty() ? std::string() : "eta:" + gauge_names.front(), row);
+    extremes("F_sw", row);
+    row.push_back(p.response.energy_per_cycle.value_or(NAN));
+    extremes("F_w", row);
+    for (const std::string& g : gauge_names) extremes("eta:" + g, row);
     csv.write_row(row);
   }
 }

@@ -8,6 +8,8 @@
 
 #include "sloshsph/core/case_spec.hpp"
 #include "sloshsph/linear/forced_response.hpp"
+#include "sloshsph/linear/screen_drag.hpp"
+#include "sloshsph/run/response.hpp"
 
 namespace sloshsph {
 
@@ -16,6 +18,9 @@ struct LinearCaseOptions {
   // "auto": boundary-layer for a rectangle, none otherwise; "none"; "boundary-layer" (a
   // rectangle only); or a damping ratio applied to every mode, as text ("0.005").
   std::string damping = "auto";
+  // The drag of the case's vertical screens in a rectangular tank (linear/screen_drag.hpp); false:
+  // a clean tank.
+  bool screens = true;
 };
 
 struct LinearCase {
@@ -23,7 +28,8 @@ struct LinearCase {
   std::vector<double> damping;     // zeta per mode
   std::string damping_model;       // "none", "boundary-layer" or "given"
   std::vector<std::string> gauge_names;
-  std::vector<std::string> ignored;  // parts of the case the linear model leaves out (screens, ...)
+  std::vector<std::string> ignored;  // parts of the case the linear model leaves out (plates, ...)
+  std::vector<LinearScreen> screens; // the screens it takes, with their loss laws
   LinearResponse response;
   std::vector<double> base_displacement;  // m, x of the base at each of response.time
 };
@@ -36,5 +42,31 @@ LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& o
 
 // The columns `time`, `x_base`, `eta:<gauge>`..., `F_w`, `F_sw` (the SPH run's names and units).
 void write_linear_csv(const std::string& path, const LinearCase& result);
+
+// The linear model's steady state at one frequency ratio: the response (run/response.hpp) of its
+// time series, analysed as an SPH run's (the last output.response_cycles periods, low-passed at
+// output.lowpass_hz).
+struct LinearFrequencyPoint {
+  double beta = 0.0;
+  double omega = 0.0;  // rad/s
+  Response response;
+};
+
+struct LinearFrequencyResponse {
+  LinearCase model;  // the modes, damping and screens (at the first ratio; its time series dropped)
+  std::vector<LinearFrequencyPoint> points;
+};
+
+// The linear model of the case file at each frequency ratio of `betas`, the case read with `sets`
+// and the frequency key the case uses set as `sloshsph sweep` sets it (run/sweep.hpp). Throws
+// InputError naming excitation.type unless the excitation is harmonic.
+LinearFrequencyResponse linear_frequency_response(const std::string& case_path, const std::vector<std::string>& sets,
+                                                  const std::vector<double>& betas, const LinearCaseOptions& options);
+
+// The columns of a sweep's frequency_response.csv that the linear model has: beta, omega, eta_max,
+// eta_min (the first gauge), F_sw_max, F_sw_min, energy_per_cycle, F_w_max, F_w_min, then
+// eta_max:<gauge>, eta_min:<gauge> for every gauge.
+void write_linear_frequency_csv(const std::string& path, const std::vector<LinearFrequencyPoint>& points,
+                                const std::vector<std::string>& gauge_names);
 
 }  // namespace sloshsph
