@@ -246,7 +246,7 @@ SlatPlane slat_plane(const ScreenSpec& sc, const TankGeometry& section, double b
 // The slat walls of `section_walls` on `plane`'s lines, those for which `inside` holds.
 template <class Inside>
 void add_slat_walls(const std::vector<WallSample>& section_walls, const SlatPlane& plane, Inside inside,
-                           std::vector<WallSample3>& walls) {
+                    std::vector<WallSample3>& walls) {
   const Vec3 up{0.0, 0.0, 1.0};
   for (const WallSample& w : section_walls)
     for (double s : plane.lines) {
@@ -256,8 +256,7 @@ void add_slat_walls(const std::vector<WallSample>& section_walls, const SlatPlan
 }
 
 // The fluid kept clear of the slats: no particle closer than 0.9 dp to one of walls[first, end).
-void keep_clear_of_slats(const std::vector<WallSample3>& walls, std::size_t first, double dp,
-                                std::vector<Vec3>& fluid) {
+void keep_clear_of_slats(const std::vector<WallSample3>& walls, std::size_t first, double dp, std::vector<Vec3>& fluid) {
   if (first == walls.size()) return;
   std::vector<Vec3> slats;
   for (std::size_t k = first; k < walls.size(); ++k) slats.push_back(walls[k].position);
