@@ -206,6 +206,10 @@ static ScreenSpec resolved_screen(const CaseSpec& spec, const TankGeometry& tank
   return sc;
 }
 
+// The square of the distance a fluid particle is kept from a slat or plate particle, (0.9 dp)^2
+// (written 0.81 dp^2, as the fills have always had it).
+double clearance2(double dp) { return 0.81 * dp * dp; }
+
 // Where the slat walls of an explicit screen stand in 3D (issue 31). explicit_slat_layout gives them
 // in the section (x, z) as the walls of a vertical screen at x = x_line; a sample at (x, z) goes to
 // origin + s along + (x - x_ref) across + z e_z on each of the plane's lines s (horizontal unit
@@ -260,7 +264,7 @@ void keep_clear_of_slats(const std::vector<WallSample3>& walls, std::size_t firs
   if (first == walls.size()) return;
   std::vector<Vec3> slats;
   for (std::size_t k = first; k < walls.size(); ++k) slats.push_back(walls[k].position);
-  const double reach = 0.9 * dp, reach2 = 0.81 * dp * dp;  // reach2 as clear_of has it
+  const double reach = 0.9 * dp, reach2 = clearance2(dp);
   BasicCellGrid<3> grid;
   grid.build(slats, 0, slats.size(), reach);
   std::vector<Vec3> kept;
@@ -326,7 +330,7 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
 // A fluid particle is kept clear of slats and plates: no closer than 0.9 dp to one of their particles.
 static bool clear_of(Vec2 f, const std::vector<WallSample>& solids, double dp) {
   for (const WallSample& w : solids)
-    if (norm2(f - w.position) < 0.81 * dp * dp) return false;
+    if (norm2(f - w.position) < clearance2(dp)) return false;
   return true;
 }
 

@@ -21,7 +21,6 @@ void gauss_legendre(int points, double a, double b, std::vector<double>& nodes, 
         p0 = p1;
         p1 = p2;
       }
-      if (points == 1) p0 = 1.0, p1 = x;
       derivative = points * (x * p1 - p0) / (x * x - 1.0);
       const double step = p1 / derivative;
       x -= step;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
-#include <numbers>
 
 #include "sloshsph/core/errors.hpp"
 #include "sloshsph/geometry/tank.hpp"
@@ -136,6 +135,7 @@ LinearCase linear_case_response(const CaseSpec& spec, const LinearCaseOptions& o
   in.base_acceleration = [base](double t) { return base->at(t).acceleration.x; };
   in.density = spec.fluid.density;
   in.still_water_area = still_water_area(tank, spec.fill.depth);
+  out.still_water_area = in.still_water_area;
   for (const GaugeSpec& g : spec.gauges) {
     in.gauge_x.push_back(g.x);
     out.gauge_names.push_back(g.name);
@@ -180,13 +180,8 @@ Response linear_steady_state(const CaseSpec& spec, const LinearCase& r) {
   units.insert(units.end(), {"N/m", "N/m"});
   columns.push_back(r.response.wall_force);
   columns.push_back(r.response.sloshing_force);
-  ResponseOptions o;
-  o.period = 2.0 * std::numbers::pi / spec.excitation.omega;
-  o.cycles = spec.output.response_cycles;
-  o.cutoff_hz = spec.output.lowpass_hz;
-  o.water_mass = spec.fluid.density * spec.tank.length * spec.fill.depth;
-  o.amplitude = spec.excitation.amplitude;
-  return steady_state_response(names, units, columns, o);
+  return steady_state_response(names, units, columns,
+                               response_options(spec, spec.fluid.density * r.still_water_area, false));
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ struct LinearCase {
   std::vector<std::string> gauge_names;
   std::vector<std::string> ignored;  // parts of the case the linear model leaves out (plates, ...)
   std::vector<LinearScreen> screens; // the screens it takes, with their loss laws
+  double still_water_area = 0.0;     // m^2, of the section below the still level
   LinearResponse response;
   std::vector<double> base_displacement;  // m, x of the base at each of response.time
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <stdexcept>
 
 #include "sloshsph/analysis/filter.hpp"
@@ -24,6 +25,19 @@ int column_index(const std::vector<std::string>& names, const std::string& name)
 }
 
 }  // namespace
+
+ResponseOptions response_options(const CaseSpec& spec, double water_mass, bool whole_tank) {
+  const ExcitationSpec& e = spec.excitation;
+  ResponseOptions o;
+  o.period = 2.0 * std::numbers::pi / e.omega;
+  o.cycles = spec.output.response_cycles;
+  o.cutoff_hz = spec.output.lowpass_hz;
+  o.water_mass = water_mass;
+  o.amplitude = e.amplitude;
+  o.energy = e.type == ExcitationType::harmonic;
+  o.whole_tank = whole_tank;
+  return o;
+}
 
 const ResponseValue* Response::find(const std::string& name) const {
   for (const ResponseValue& v : values)

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "sloshsph/core/case_spec.hpp"
+
 namespace sloshsph {
 
 struct ResponseOptions {
@@ -20,6 +22,12 @@ struct ResponseOptions {
   bool energy = true;          // eq. 4.28 (horizontal base motion only: F_w dX)
   bool whole_tank = false;     // 3D: forces in N and energies in J (2D: per metre, N/m and J/m)
 };
+
+// The analysis a resolved case asks for (an SPH run's and the linear model's alike): the period of
+// its excitation (excitation.omega > 0), output.response_cycles, output.lowpass_hz, the water mass
+// and base amplitude of eq. 4.27, and eq. 4.28's energy for a harmonic translation (a pitch does
+// its work through a moment, not F_w dX).
+ResponseOptions response_options(const CaseSpec& spec, double water_mass, bool whole_tank);
 
 struct ResponseValue {
   std::string name;  // the time-series column, e.g. "eta:right", "F_sw"

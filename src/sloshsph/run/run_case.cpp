@@ -136,15 +136,8 @@ nlohmann::json analyse_response(const CaseSpec& spec, const BasicSimulation<D>& 
     names.push_back(c.name);
     units.push_back(c.unit);
   }
-  ResponseOptions o;
-  o.period = 2.0 * M_PI / e.omega;
-  o.cycles = spec.output.response_cycles;
-  o.cutoff_hz = spec.output.lowpass_hz;
-  o.water_mass = sim.scene().initial_fluid_mass;
-  o.amplitude = e.amplitude;
-  o.energy = e.type == ExcitationType::harmonic;  // pitch does its work through a moment, not F_w dX
-  o.whole_tank = D == 3;
-  const Response r = steady_state_response(names, units, series.columns, o);
+  const Response r = steady_state_response(names, units, series.columns,
+                                           response_options(spec, sim.scene().initial_fluid_mass, D == 3));
   if (r.note.empty()) write_file_atomic((fs::path(dir) / "response.csv").string(), response_csv(r));
   return response_json(r);
 }
