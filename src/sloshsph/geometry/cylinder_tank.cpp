@@ -9,6 +9,11 @@ namespace {
 // Lattice lines (i + 1/2) dp across the tank's plan, 0 to 2R.
 int lattice_lines(const CylinderTank& tank, double dp) { return static_cast<int>(std::ceil(2.0 * tank.radius / dp - 1e-9)); }
 
+// A lattice node of the plan at least dp/2 inside the side wall (r <= R - dp/2).
+bool inside_fill(const CylinderTank& tank, Vec2 q, double dp) {
+  return norm(q - tank.axis()) <= tank.radius - 0.5 * dp * (1.0 - 1e-9);
+}
+
 }  // namespace
 
 std::vector<WallSample3> sample_walls(const CylinderTank& tank, double dp, int layers) {
@@ -43,7 +48,7 @@ std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth) 
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Vec2 q{(i + 0.5) * dp, (j + 0.5) * dp};
-      if (norm(q - tank.axis()) <= tank.radius - 0.5 * dp * (1.0 - 1e-9)) layer.push_back(q);
+      if (inside_fill(tank, q, dp)) layer.push_back(q);
     }
   std::stable_sort(layer.begin(), layer.end(),
                    [&tank](Vec2 a, Vec2 b) { return norm2(a - tank.axis()) < norm2(b - tank.axis()); });
@@ -59,6 +64,19 @@ std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth) 
     if (a.y != b.y) return a.y < b.y;
     return a.x < b.x;
   });
+  return out;
+}
+
+std::vector<Vec3> fill_blocks(const CylinderTank& tank, double dp, const std::vector<FluidBlock>& blocks) {
+  const int n = lattice_lines(tank, dp);
+  const int levels = static_cast<int>(std::ceil(tank.height / dp - 1e-9));
+  std::vector<Vec3> out;
+  for (int k = 0; k < levels; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const Vec3 q{(i + 0.5) * dp, (j + 0.5) * dp, (k + 0.5) * dp};
+        if (in_blocks(blocks, {q.x, q.z}) && inside_fill(tank, {q.x, q.y}, dp)) out.push_back(q);
+      }
   return out;
 }
 

@@ -60,6 +60,11 @@ std::vector<WallSample3> sample_walls(const CylinderTank& tank, double dp, int l
 // are symmetric about the axis.
 std::vector<Vec3> fill_fluid(const CylinderTank& tank, double dp, double depth);
 
+// Fluid particles of [[fill.blocks]] (issue 31): the nodes of the same lattice inside r <= R - dp/2
+// whose (x, z) a block holds (in_blocks), in lattice order. A block is a rectangle of the plane
+// (x, z) over every y inside the circle, as in a box it is over the whole breadth.
+std::vector<Vec3> fill_blocks(const CylinderTank& tank, double dp, const std::vector<FluidBlock>& blocks);
+
 // round(pi R^2 depth / dp^3): the particles of volume dp^3 that hold the water of `depth`.
 std::size_t cylinder_fill_count(const CylinderTank& tank, double dp, double depth);
 

@@ -300,7 +300,15 @@ std::vector<ScreenSpec> place_screens(const CaseSpec& spec, const TankGeometry& 
   return screens;
 }
 
-// An upright cylinder: the fluid on the cubic lattice inside it, its side and bottom walls; the
+// Fill blocks in 3D: each fluid particle at the hydrostatic pressure below the top of its block, as
+// in 2D (the block's section (x, z) holds it).
+void start_blocks_at_rest(const CaseSpec& spec, Particles3& p) {
+  const double rho_g = spec.fluid.density * spec.fluid.gravity;
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    p.pressure[i] = rho_g * (block_surface(spec.fill.blocks, in_section(p.position[i])) - p.position[i].z);
+}
+
+// An upright cylinder: the fluid on the cubic lattice inside it (or in its fill blocks), its side and bottom walls; the
 // scene's section is the rectangle 2R x height it stands in. Porous screens (vertical planes) are
 // extruded over the chord their plane cuts by the driver; explicit slats stand on it (place_screens).
 Scene3 build_cylinder_scene(const CaseSpec& spec) {
@@ -310,7 +318,8 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
   auto tank = std::make_shared<TankGeometry>(make_tank(box, spec.where("tank.radius")));
   check_probes_3d(spec, [&cylinder](Vec3 p) { return cylinder.signed_distance(p); }, tank->y_top);
   const double dp = spec.particles.dp;
-  std::vector<Vec3> fluid = fill_fluid(cylinder, dp, spec.fill.depth);
+  const std::vector<FluidBlock>& blocks = spec.fill.blocks;  // each over the chords of the circle
+  std::vector<Vec3> fluid = blocks.empty() ? fill_fluid(cylinder, dp, spec.fill.depth) : fill_blocks(cylinder, dp, blocks);
   std::vector<WallSample3> walls = sample_walls(cylinder, dp, spec.particles.wall_layers);
   // Explicit slats over the chord of their plane: the lines of the plane inside the circle.
   std::vector<std::string> warnings;
@@ -321,7 +330,9 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
   scene.screens = std::move(screens);
   scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());
   // The fill holds the water of fill.depth (fill_fluid): above the depth at first, it settles into
-  // the ring of gaps the square lattice leaves along the round wall.
+  // the ring of gaps the square lattice leaves along the round wall. Blocks: fill.depth is their
+  // water's settled level (the case reader's).
+  if (!blocks.empty()) start_blocks_at_rest(spec, scene.particles);
   return scene;
 }
 
@@ -352,14 +363,8 @@ Scene3 build_scene3(const CaseSpec& spec) {
   auto inside = [&prism](Vec3 q, const ScreenSpec& sc) { return !sc.plan || prism.signed_distance(q) > 0.0; };
   std::vector<ScreenSpec> screens = place_screens(spec, *tank, prism.breadth, inside, fluid, walls, warnings);
   Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
-  if (blocks.empty()) {
-    add_fill_warning(spec, *tank, section_fluid.size(), scene.warnings);
-  } else {  // each particle at the hydrostatic pressure below the top of its block, as in 2D
-    Particles3& p = scene.particles;
-    const double rho_g = spec.fluid.density * spec.fluid.gravity;
-    for (std::size_t i = 0; i < p.n_fluid; ++i)
-      p.pressure[i] = rho_g * (block_surface(blocks, in_section(p.position[i])) - p.position[i].z);
-  }
+  if (blocks.empty()) add_fill_warning(spec, *tank, section_fluid.size(), scene.warnings);
+  else start_blocks_at_rest(spec, scene.particles);
   add_breadth_warning(spec, scene.warnings);
   scene.screens = std::move(screens);
   scene.warnings.insert(scene.warnings.end(), warnings.begin(), warnings.end());

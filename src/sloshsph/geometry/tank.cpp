@@ -477,10 +477,13 @@ std::vector<Vec2> fill_blocks(const TankGeometry& tank, double dp, const std::ve
   for (int j = 0; j < nj; ++j)
     for (int i = 0; i < ni; ++i) {
       const Vec2 p{tank.x_min + (i + 0.5) * dp, tank.y_bottom + (j + 0.5) * dp};
-      const bool inside = std::any_of(blocks.begin(), blocks.end(), [&](const FluidBlock& b) { return in_block(b, p); });
-      if (inside && tank.signed_distance(p) >= 0.5 * dp * (1.0 - 1e-9)) out.push_back(p);
+      if (in_blocks(blocks, p) && tank.signed_distance(p) >= 0.5 * dp * (1.0 - 1e-9)) out.push_back(p);
     }
   return out;
+}
+
+bool in_blocks(const std::vector<FluidBlock>& blocks, Vec2 p) {
+  return std::any_of(blocks.begin(), blocks.end(), [&](const FluidBlock& b) { return in_block(b, p); });
 }
 
 double block_surface(const std::vector<FluidBlock>& blocks, Vec2 p) {

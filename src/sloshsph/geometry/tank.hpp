@@ -99,6 +99,9 @@ std::vector<Vec2> fill_fluid(const TankGeometry& tank, double dp, double depth);
 // a block when from <= x < to), inside the section and at least dp/2 from the wall.
 std::vector<Vec2> fill_blocks(const TankGeometry& tank, double dp, const std::vector<FluidBlock>& blocks);
 
+// Whether some block holds the lattice node p (from <= p < to, as fill_blocks counts it).
+bool in_blocks(const std::vector<FluidBlock>& blocks, Vec2 p);
+
 // The free surface above p of the water at rest in the blocks: the highest top of the blocks
 // that contain p (p.y if none does). For the initial hydrostatic pressure of a block.
 double block_surface(const std::vector<FluidBlock>& blocks, Vec2 p);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/cylinder_tank.hpp"
 #include "sloshsph/geometry/tank.hpp"
 #include "sloshsph/io/toml_reader.hpp"
 
@@ -768,12 +769,13 @@ void check_dimensions(const CaseSpec& s) {
 void resolve_fill(CaseSpec& s) {
   FillSpec& f = s.fill;
   if (f.blocks.empty()) return;
-  if (s.tank.shape == "cylinder")  // 3D: a block is its section's rectangle over a prism's breadth
-    throw InputError(s.where("fill.blocks"), "fill.blocks",
-                     "fill blocks in a cylinder are not available yet (issue 31); in a 3D box or prism a block is the "
-                     "rectangle of the section (x, height) over the whole breadth");
   check_particle_estimate(s);
-  const TankGeometry tank = make_tank(s.tank, s.where("tank.shape"));
+  // A cylinder's blocks are checked against the rectangle 2R x height it stands in (its section
+  // in the plane (x, z)), and hold the lattice nodes inside the circle (geometry/cylinder_tank.hpp).
+  const bool cylinder = s.tank.shape == "cylinder";
+  TankSpec section = s.tank;
+  if (cylinder) section.shape = "rectangle";
+  const TankGeometry tank = make_tank(section, s.where("tank.shape"));
   const double dp = s.particles.dp;
   const double top = std::min(tank.wall.front().y, tank.wall.back().y);
   for (std::size_t k = 0; k < f.blocks.size(); ++k) {
@@ -793,11 +795,16 @@ void resolve_fill(CaseSpec& s) {
     if (b.to.y >= top)
       fail("to", "the block " + box.str() + " reaches the top of the walls (y = " + std::to_string(top) + " m)");
   }
-  const std::size_t count = fill_blocks(tank, dp, f.blocks).size();
+  const CylinderTank circle{s.tank.radius, s.tank.height};
+  const std::size_t count = cylinder ? fill_blocks(circle, dp, f.blocks).size() : fill_blocks(tank, dp, f.blocks).size();
   if (count == 0) throw InputError(s.where("fill.blocks"), "fill.blocks", "no fluid particle fits in the blocks");
   f.block_head = 0.0;
   for (const FluidBlock& b : f.blocks) f.block_head = std::max(f.block_head, b.to.y - tank.y_bottom);
   if (f.depth > 0.0) return;
+  if (cylinder) {  // the blocks' water over the circle: below their tops, as the lattice inside it holds less
+    f.depth = cylinder_settled_level(circle, count, dp);
+    return;
+  }
   // Settled depth: section_area(depth) = the blocks' water, by bisection (the area grows with
   // the depth); the wall top bounds it (beyond it, there is more water than the tank holds).
   const double water = static_cast<double>(count) * dp * dp;

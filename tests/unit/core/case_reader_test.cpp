@@ -586,14 +586,18 @@ TEST(CaseReader, ThreeDimensionalKeysAreChecked) {
   expect_error(kMinimal + plan_screen + "plan_from = [0.0, 0.0]\nplan_to = [0.4, 0.2]\n", {}, "screens.0.plan_from",
                "3D");
   // Fill blocks in 3D: the section's rectangle over a box's or prism's breadth (settled depth from
-  // the section's area, as in 2D); not in a cylinder. The front probe reads in 3D.
+  // the section's area, as in 2D), or in a cylinder over the chords of the circle, checked against
+  // the rectangle 2R x height (the scene's particles: ThreeD.FillBlocksInACylinderHoldTheLatticeInsideTheCircle).
+  // The front probe reads in 3D.
   const CaseSpec blocks = read_case_text(box + "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.2]\n"
                                                "[[probes.front]]\nname = \"tip\"\n", "case.toml", {});
   EXPECT_EQ(blocks.fill.blocks.size(), 1u);
   EXPECT_EQ(blocks.fronts.size(), 1u);
-  expect_error(read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml") +
-                   "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.1, 0.1]\n",
-               {}, "fill.blocks", "cylinder");
+  const std::string round = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
+  const std::string round_block = round + "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.15, 0.1]\n";
+  EXPECT_EQ(read_case_text(round_block, "case.toml", {}).fill.blocks.size(), 1u);
+  expect_error(round_block, {"fill.blocks.0.to=[0.31, 0.1]"}, "fill.blocks.0.from", "outside the tank");
+  expect_error(round_block, {"fill.blocks.0.to=[0.15, 0.3]"}, "fill.blocks.0.to", "top of the walls");
   // Screens in a cylinder (R = 0.15 m, dp = 10 mm): vertical planes x or y = const, porous or explicit,
   // at least dp inside the wall (their particles: ScreenDrag.ScreenInACylinderSpansTheChordOfItsPlane).
   const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");

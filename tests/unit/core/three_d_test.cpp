@@ -424,6 +424,40 @@ double closest_fluid_to(const Scene3& scene, const std::vector<Vec3>& slats) {
   return closest;
 }
 
+// Issue 31, section 2: a fill block in an upright cylinder (R = 0.15 m, dp = 10 mm) is the rectangle
+// (x, z) of the block over every y inside the circle. The block x < 0.15 m (the axis), z < 0.1 m
+// holds, on each of its 10 levels, the lattice nodes ((i + 1/2) dp, (j + 1/2) dp) with x < R and
+// r <= R - dp/2 (counted here from the circle: half a layer, dp dividing 2R); each particle starts
+// at the hydrostatic pressure below the block's top, rho g (0.1 - z); the settled depth is their
+// volume over pi R^2 (exact arithmetic, 1e-12).
+TEST(ThreeD, FillBlocksInACylinderHoldTheLatticeInsideTheCircle) {
+  const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
+  std::string text = cylinder + "\n[[fill.blocks]]\nfrom = [0.0, 0.0]\nto = [0.15, 0.1]\n";
+  text.replace(text.find("depth = 0.15"), 12, "");  // the depth from the blocks' water
+  const CaseSpec spec = read_case_text(text, "block.toml", {});
+  const Scene3 scene = build_scene3(spec);
+  const double R = 0.15, dp = 0.01;
+  std::size_t layer = 0, full_layer = 0;
+  for (int j = 0; j < 30; ++j)
+    for (int i = 0; i < 30; ++i) {
+      const bool inside = std::hypot((i + 0.5) * dp - R, (j + 0.5) * dp - R) <= R - 0.5 * dp + 1e-12;
+      full_layer += inside ? 1 : 0;
+      layer += inside && i < 15 ? 1 : 0;
+    }
+  EXPECT_EQ(2 * layer, full_layer);
+  const Particles3& p = scene.particles;
+  EXPECT_EQ(p.n_fluid, 10 * layer);
+  for (std::size_t i = 0; i < p.n_fluid; ++i) {
+    const Vec3 q = p.position[i];
+    EXPECT_LT(q.x, R);
+    EXPECT_LT(q.z, 0.1);
+    EXPECT_LE(std::hypot(q.x - R, q.y - R), R - 0.5 * dp + 1e-12);
+    EXPECT_NEAR(p.pressure[i], spec.fluid.density * spec.fluid.gravity * (0.1 - q.z), 1e-9);
+  }
+  EXPECT_NEAR(spec.fill.depth, static_cast<double>(p.n_fluid) * dp * dp * dp / (std::numbers::pi * R * R), 1e-12);
+  EXPECT_NEAR(scene.still_level, spec.fill.depth, 1e-12);
+}
+
 // Issue 31, section 2: explicit slats in an upright cylinder (R = 0.15 m, dp = 10 mm). A screen in
 // the plane x = 0.12 m is the section's slat walls (explicit_slat_walls) on every lattice line y =
 // (j + 1/2) dp inside the circle: each slat particle keeps its section position (x, z), stands
