@@ -79,6 +79,34 @@ TEST(ValidationLong, ElasticPlateElCentroStrongMotion) {
                   "plate_elcentro_3_5s", 0.02);
 }
 
+// Issue 31: cases/hydrostatic_plate3d.toml, the hydrostatic plate of the CI test
+// Validation.HydrostaticPlateDeflectsAsTheClampedBeam in a box 4 dp broad (20,000 fluid particles,
+// WCSPH, 1 s of settling then 0.5 s). The plate spans the breadth and bends as the 2D beam per metre
+// of breadth, so the references and tolerances are the 2D test's: the mean mid-span deflection
+// within 5% of q L^4 / (384 E I) + q L^2 / (8 kGA), q = rho g H + rho_s g t; the whole vertical load
+// within 2% of the weight of the water above the plate, rho g H L B (B = 4 dp); none through or
+// inside the plate, none lost.
+TEST(ValidationLong, HydrostaticPlateInThreeDimensionsDeflectsAsTheClampedBeam) {
+  const RunResult r = run_file_in_memory<3>(case_path("hydrostatic_plate3d.toml"), {}, [](const Simulation3&) {});
+  const double rho = 1000.0, g = 9.81, H = 1.0, L = 2.0, B = 0.08, t = 0.06, E = 1.0e10, nu = 0.3, rho_s = 2700.0;
+  const double EI = E * t * t * t / 12.0, kGA = 5.0 / 6.0 * E / (2.0 * (1.0 + nu)) * t;
+  const double q = rho * g * H + rho_s * g * t;
+  const double w_ref = q * std::pow(L, 4) / (384.0 * EI) + q * L * L / (8.0 * kGA);
+  const double w = -r.mean("plate_mid_dz:floor", 0.0, 0.5);
+  const double load = -r.mean("F_plate_z:floor", 0.01, 0.5);
+  report("hydrostatic_plate3d_midspan_m", w);
+  report("hydrostatic_plate3d_ratio", w / w_ref);
+  report("hydrostatic_plate3d_load_ratio", load / (rho * g * H * L * B));
+  report("hydrostatic_plate3d_wall_s", r.wall_seconds);
+  check_relative("mean mid-span deflection, 0-0.5 s, 3D slab", w, w_ref, 0.05,
+                 "clamped-clamped beam, q L^4/(384 EI) + q L^2/(8 kGA), q = water + plate weight (as in 2D)", "m");
+  check_relative("whole vertical load on the plate / weight of water above it, 3D slab", load / (rho * g * H * L * B), 1.0,
+                 0.02, "hydrostatics: rho g H L B");
+  check_at_most("particles that crossed the plate", r.max("plate_crossings:floor"), 0.0, "none may pass");
+  check_at_most("particles inside the plate", r.max("plate_inside:floor"), 0.0, "none may sit inside");
+  check_at_most("particles leaked from the tank", static_cast<double>(r.leaked), 0.0, "none may leave");
+}
+
 TEST(ValidationLong, ElasticPlateElCentro) {
   check_plate_run("elastic_plate_elcentro.toml", {}, "plate_elcentro", 0.02);
 }

@@ -11,19 +11,6 @@
 namespace sloshsph::testing {
 namespace {
 
-double mean_over(const RunResult& r, const std::string& column, double from, double to) {
-  const std::vector<double>& t = r["time"];
-  const std::vector<double>& v = r[column];
-  double sum = 0.0;
-  int n = 0;
-  for (std::size_t k = 0; k < t.size(); ++k)
-    if (t[k] >= from && t[k] <= to) {
-      sum += v[k];
-      ++n;
-    }
-  return n > 0 ? sum / n : NAN;
-}
-
 // cases/hydrostatic_plate.toml: a 1 m water column on a 2 m plate clamped at both ends (WCSPH,
 // dp = 20 mm, 1 s of damped settling of fluid and plate together, then 0.5 s). Reference: the clamped-clamped beam under the uniform load of the water and
 // of the plate's own weight, w = q L^4 / (384 E I) + q L^2 / (8 k G A) (Timoshenko's shear part,
@@ -35,8 +22,8 @@ TEST(Validation, HydrostaticPlateDeflectsAsTheClampedBeam) {
   const double EI = E * t * t * t / 12.0, kGA = 5.0 / 6.0 * E / (2.0 * (1.0 + nu)) * t;
   const double q_water = rho * g * H, q = q_water + rho_s * g * t;
   const double w_ref = q * std::pow(L, 4) / (384.0 * EI) + q * L * L / (8.0 * kGA);
-  const double w = -mean_over(r, "plate_mid_dy:floor", 0.0, 0.5);
-  const double load = -mean_over(r, "F_plate_y:floor", 0.01, 0.5);
+  const double w = -r.mean("plate_mid_dy:floor", 0.0, 0.5);
+  const double load = -r.mean("F_plate_y:floor", 0.01, 0.5);
   report("hydrostatic_plate_midspan_m", w);
   report("hydrostatic_plate_reference_m", w_ref);
   report("hydrostatic_plate_ratio", w / w_ref);

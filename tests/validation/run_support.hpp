@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -28,6 +29,19 @@ struct RunResult {
   double max(const std::string& c) const {
     const std::vector<double>& v = series.at(c);
     return *std::max_element(v.begin(), v.end());
+  }
+  // The mean of the samples of column c with from <= t <= to (NaN if none).
+  double mean(const std::string& c, double from, double to) const {
+    const std::vector<double>& t = series.at("time");
+    const std::vector<double>& v = series.at(c);
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t k = 0; k < t.size(); ++k)
+      if (t[k] >= from && t[k] <= to) {
+        sum += v[k];
+        ++n;
+      }
+    return n > 0 ? sum / n : std::nan("");
   }
 };
 

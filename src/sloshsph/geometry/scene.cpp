@@ -338,6 +338,13 @@ Scene3 build_cylinder_scene(const CaseSpec& spec) {
 
 }  // namespace
 
+// The y of the lattice planes across a prism's breadth, (m + 1/2) dp (on_planes_across's).
+static std::vector<double> plate_planes(const PrismTank& prism, double dp) {
+  std::vector<double> y;
+  for (const Vec3& q : on_planes_across(prism, dp, {Vec2{}})) y.push_back(q.y);
+  return y;
+}
+
 // A fluid particle is kept clear of slats and plates: no closer than 0.9 dp to one of their particles.
 static bool clear_of(Vec2 f, const std::vector<WallSample>& solids, double dp) {
   for (const WallSample& w : solids)
@@ -362,7 +369,26 @@ Scene3 build_scene3(const CaseSpec& spec) {
   std::vector<std::string> warnings;
   auto inside = [&prism](Vec3 q, const ScreenSpec& sc) { return !sc.plan || prism.signed_distance(q) > 0.0; };
   std::vector<ScreenSpec> screens = place_screens(spec, *tank, prism.breadth, inside, fluid, walls, warnings);
+  // Elastic plates across the breadth: the section's plate particles on every lattice plane across
+  // it (run/plate_coupling.hpp), the last wall particles, the fluid kept clear of them.
+  const std::size_t first_plate_wall = walls.size();
+  std::vector<PlateLayout> plates;
+  std::vector<std::size_t> plate_offsets;
+  const std::vector<double> planes = plate_planes(prism, dp);
+  for (std::size_t k = 0; k < spec.plates.size(); ++k) {
+    const KeyLocation where = [&spec](const std::string& key) { return spec.where(key); };
+    PlateLayout layout = plate_layout(spec.plates[k], dp, 2.0 * spec.particles.kernel_ratio * dp, *tank, where,
+                                      "plates." + std::to_string(k));
+    plate_offsets.push_back(walls.size());
+    for (const WallSample& w : layout.walls)
+      for (double y : planes) walls.push_back({at_breadth(w.position, y), at_breadth(w.normal, 0.0)});
+    plates.push_back(std::move(layout));
+  }
+  keep_clear_of_slats(walls, first_plate_wall, dp, fluid);
   Scene3 scene = three_d_scene(spec, tank, prism.breadth, tank->y_bottom + spec.fill.depth, fluid, walls);
+  scene.plates = std::move(plates);
+  for (std::size_t offset : plate_offsets) scene.plate_first.push_back(fluid.size() + offset);
+  if (!scene.plates.empty()) scene.plate_planes = planes;
   if (blocks.empty()) add_fill_warning(spec, *tank, section_fluid.size(), scene.warnings);
   else start_blocks_at_rest(spec, scene.particles);
   add_breadth_warning(spec, scene.warnings);

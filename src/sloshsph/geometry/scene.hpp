@@ -25,8 +25,8 @@ using PressureSensor = BasicPressureSensor<2>;
 
 // The particles and geometry of a case, in 2 or 3 dimensions. In 3D the tank is `tank` (the
 // section, in the x-z plane) extruded over `breadth` (geometry/prism_tank.hpp), and so are the
-// porous screens (ergun, morison; physics/porous.hpp); explicit slats and plates exist in 2D only
-// (the case reader refuses them in 3D).
+// porous screens (ergun, morison; physics/porous.hpp), the explicit slats and the plates (on the
+// lattice planes across the breadth; in a cylinder no plates).
 template <int D>
 struct BasicScene {
   // The section; shared: ContainerDistance points into it. For a cylinder, the rectangle 2R x
@@ -42,10 +42,14 @@ struct BasicScene {
   std::size_t initial_fluid_count = 0;
   std::vector<ScreenSpec> screens;  // the case's screens, full-height ones resolved to from/to
   // Elastic plates: their layouts and where their wall particles start in the particle store
-  // (plate k holds particles [plate_first[k], plate_first[k] + plates[k].walls.size())). They
+  // (plate k holds particles [plate_first[k], plate_first[k] + plates[k].walls.size() x the planes
+  // across the breadth in 3D, below)). They
   // are the last wall particles, after the tank walls and the explicit slats.
   std::vector<PlateLayout> plates;
   std::vector<std::size_t> plate_first;
+  // 3D: the y of the lattice planes across the breadth the plates' section particles stand on
+  // (plate k's particle j * plate_planes.size() + m is section particle j on plane m).
+  std::vector<double> plate_planes;
   std::vector<BasicPressureSensor<D>> pressure_sensors;  // one per [[probes.pressure]], in case order
   std::vector<std::string> warnings;  // set-up remarks for the user (e.g. slats too fine for dp)
 };

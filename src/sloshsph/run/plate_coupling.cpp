@@ -15,6 +15,18 @@ BeamSupport beam_support(PlateSupport s) {
                                      : BeamSupport::kFree;
 }
 
+// A vector of the store in the plate's plane (the section: (x, y) in 2D, (x, z) in 3D), and back.
+template <int D>
+Vec2 in_plate_plane(const Vec<D>& v) {
+  if constexpr (D == 2) return v;
+  else return {v.x, v.z};
+}
+template <int D>
+Vec<D> from_plate_plane(Vec2 v, double y) {
+  if constexpr (D == 2) return v;
+  else return {v.x, y, v.y};
+}
+
 }  // namespace
 
 BeamSpec plate_beam_spec(const PlateSpec& spec) {
@@ -41,8 +53,11 @@ BeamSpec plate_beam_spec(const PlateSpec& spec) {
   return b;
 }
 
-PlateCoupling::PlateCoupling(const PlateLayout& layout, std::size_t first_wall)
-    : layout_(layout), first_wall_(first_wall), beam_(plate_beam_spec(layout.spec)) {
+template <int D>
+BasicPlateCoupling<D>::BasicPlateCoupling(const PlateLayout& layout, std::size_t first_wall, std::vector<double> planes,
+                                          double dp)
+    : layout_(layout), first_wall_(first_wall), planes_(std::move(planes)), dp_(dp), beam_(plate_beam_spec(layout.spec)) {
+  if (D == 3 && planes_.empty()) throw InputError("plates", "plates", "a 3D plate needs the planes across the breadth");
   const std::size_t n = layout_.walls.size();
   points_.reserve(n);
   for (const WallSample& w : layout_.walls) points_.push_back(beam_.material_point(w.position));
@@ -52,14 +67,19 @@ PlateCoupling::PlateCoupling(const PlateLayout& layout, std::size_t first_wall)
   contact_force_.assign(static_cast<std::size_t>(beam_.node_count()), Vec2{});
 }
 
-void PlateCoupling::place(Particles& p) const {
-  const std::size_t base = p.n_fluid + first_wall_;
+template <int D>
+void BasicPlateCoupling<D>::place(Particles& p) const {
   for (std::size_t k = 0; k < points_.size(); ++k) {
-    const std::size_t w = base + k;
-    p.position[w] = beam_.position(points_[k]);
-    p.normal[w] = rotated(layout_.walls[k].normal, beam_.rotation(points_[k]));
-    p.wall_motion_velocity[first_wall_ + k] = velocity_[k];
-    p.wall_motion_acceleration[first_wall_ + k] = acceleration_[k];
+    const Vec2 position = beam_.position(points_[k]);
+    const Vec2 normal = rotated(layout_.walls[k].normal, beam_.rotation(points_[k]));
+    for (std::size_t m = 0; m < plane_count(); ++m) {
+      const double y = D == 2 ? 0.0 : planes_[m];
+      const std::size_t w = store_index(p, k, m);
+      p.position[w] = from_plate_plane<D>(position, y);
+      p.normal[w] = from_plate_plane<D>(normal, 0.0);
+      p.wall_motion_velocity[w - p.n_fluid] = from_plate_plane<D>(velocity_[k], 0.0);
+      p.wall_motion_acceleration[w - p.n_fluid] = from_plate_plane<D>(acceleration_[k], 0.0);
+    }
   }
 }
 
@@ -67,29 +87,33 @@ void PlateCoupling::place(Particles& p) const {
 // normal, p_face = p_w + rho0 (g - a_w) . n d (the hydrostatic part of Adami's extrapolation,
 // eq. 27), kept >= 0 as the wall pressure is; a face with no fluid on it (wall pressure 0: nothing
 // to extrapolate from) carries nothing.
-Vec2 PlateCoupling::fluid_force(const Particles& p, const FrameForce& frame, double rho0) {
-  const std::size_t base = p.n_fluid + first_wall_;
+template <int D>
+Vec2 BasicPlateCoupling<D>::fluid_force(const Particles& p, const FrameForce& frame, double rho0) {
   Vec2 total;
   for (std::size_t k = 0; k < points_.size(); ++k) {
     force_[k] = {};
-    const std::size_t w = base + k;
-    const double p_w = p.pressure[w];
-    if (p_w <= 0.0) continue;
     const double angle = beam_.rotation(points_[k]);
-    const Vec2 g = frame.at(p.position[w], Vec2{}) - acceleration_[k];
-    for (const PlateFace* face : {&layout_.side_face[k], &layout_.end_face[k]}) {
-      if (face->length <= 0.0) continue;
-      const Vec2 n = rotated(face->normal, angle);
-      const double p_face = std::max(0.0, p_w + rho0 * dot(g, n) * face->distance);
-      force_[k] += (-p_face * face->length) * n;
+    for (std::size_t m = 0; m < plane_count(); ++m) {
+      const std::size_t w = store_index(p, k, m);
+      const double p_w = p.pressure[w];
+      if (p_w <= 0.0) continue;
+      const Vec2 g = in_plate_plane<D>(frame.at(p.position[w], Vec<D>{})) - acceleration_[k];
+      for (const PlateFace* face : {&layout_.side_face[k], &layout_.end_face[k]}) {
+        if (face->length <= 0.0) continue;
+        const Vec2 n = rotated(face->normal, angle);
+        const double p_face = std::max(0.0, p_w + rho0 * dot(g, n) * face->distance);
+        force_[k] += (-p_face * face->length) * n;
+      }
     }
+    if constexpr (D == 3) force_[k] = force_[k] / static_cast<double>(planes_.size());  // per metre: the planes' mean
     total += force_[k];
   }
   last_force_ = total;
   return total;
 }
 
-void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
+template <int D>
+void BasicPlateCoupling<D>::advance(Particles& p, double dt, const FrameForce& frame) {
   BeamLoads loads = beam_.zero_loads();
   for (std::size_t k = 0; k < points_.size(); ++k)
     if (force_[k].x != 0.0 || force_[k].y != 0.0) beam_.add_force(points_[k], force_[k], loads);
@@ -99,7 +123,10 @@ void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
   std::fill(contact_force_.begin(), contact_force_.end(), Vec2{});
   // The body force of the tank frame (gravity, the base's acceleration, pitch terms) at the
   // middle of the undeformed plate: uniform over the plate.
-  loads.body_acceleration = frame.at(0.5 * (layout_.spec.from + layout_.spec.to), Vec2{});
+  // In 3D at the middle of the breadth too.
+  const double mid_y = D == 2 ? 0.0 : 0.5 * (planes_.front() + planes_.back());
+  loads.body_acceleration =
+      in_plate_plane<D>(frame.at(from_plate_plane<D>(0.5 * (layout_.spec.from + layout_.spec.to), mid_y), Vec<D>{}));
   beam_.step(dt, loads);
   for (std::size_t k = 0; k < points_.size(); ++k) {
     const Vec2 v = beam_.velocity(points_[k]);
@@ -110,7 +137,8 @@ void PlateCoupling::advance(Particles& p, double dt, const FrameForce& frame) {
   place(p);
 }
 
-void PlateCoupling::damp(Particles& p, double factor) {
+template <int D>
+void BasicPlateCoupling<D>::damp(Particles& p, double factor) {
   beam_.scale_velocities(factor);
   for (std::size_t k = 0; k < points_.size(); ++k) {
     velocity_[k] = beam_.velocity(points_[k]);
@@ -119,14 +147,16 @@ void PlateCoupling::damp(Particles& p, double factor) {
   place(p);
 }
 
-void PlateCoupling::restart() {
+template <int D>
+void BasicPlateCoupling<D>::restart() {
   max_abs_tip_dx_ = std::abs(tip_displacement().x);
   crossings_ = 0;
   contacts_ = 0;
   first_crossing_ = {};
 }
 
-Vec2 PlateCoupling::displacement_at(double fraction) const {
+template <int D>
+Vec2 BasicPlateCoupling<D>::displacement_at(double fraction) const {
   const std::vector<Vec2> u = beam_.node_displacements();
   const double x = std::clamp(fraction, 0.0, 1.0) * static_cast<double>(u.size() - 1);
   const std::size_t k = std::min(static_cast<std::size_t>(x), u.size() - 2);
@@ -134,7 +164,8 @@ Vec2 PlateCoupling::displacement_at(double fraction) const {
   return (1.0 - xi) * u[k] + xi * u[k + 1];
 }
 
-PlateCoupling::CentreLineOffset PlateCoupling::locate(Vec2 r, const std::vector<Vec2>& nodes) const {
+template <int D>
+typename BasicPlateCoupling<D>::CentreLineOffset BasicPlateCoupling<D>::locate(Vec2 r, const std::vector<Vec2>& nodes) const {
   CentreLineOffset best;
   double best_d2 = std::numeric_limits<double>::infinity(), s0 = 0.0;
   const std::size_t last = nodes.size() - 2;
@@ -158,12 +189,13 @@ PlateCoupling::CentreLineOffset PlateCoupling::locate(Vec2 r, const std::vector<
   return best;
 }
 
+template <int D>
 template <class F>
-void PlateCoupling::for_each_near_fluid(const Particles& p, const NeighbourList& nl, F&& f) {
+void BasicPlateCoupling<D>::for_each_near_fluid(const Particles& p, const NeighbourList& nl, F&& f) {
   if (stamp_.size() < p.size()) stamp_.resize(p.size(), 0);
   ++calls_;
   const std::size_t base = p.n_fluid + first_wall_;
-  for (std::size_t k = 0; k < points_.size(); ++k)
+  for (std::size_t k = 0; k < count(); ++k)
     for (auto it = nl.begin(base + k); it != nl.end(base + k); ++it) {
       const std::uint32_t i = *it;
       if (i >= p.n_fluid || stamp_[i] == calls_) continue;
@@ -172,7 +204,9 @@ void PlateCoupling::for_each_near_fluid(const Particles& p, const NeighbourList&
     }
 }
 
-std::size_t PlateCoupling::keep_fluid_out(Particles& p, const NeighbourList& nl, double dp, double dt, double time) {
+template <int D>
+std::size_t BasicPlateCoupling<D>::keep_fluid_out(Particles& p, const NeighbourList& nl, double dp, double dt,
+                                                  double time) {
   const std::vector<Vec2> nodes = beam_.node_positions();
   const std::vector<Vec2> node_velocity = beam_.node_velocities();
   const double half = 0.5 * layout_.spec.thickness;
@@ -187,13 +221,13 @@ std::size_t PlateCoupling::keep_fluid_out(Particles& p, const NeighbourList& nl,
   std::vector<Near> now;
   std::size_t corrected = 0;
   for_each_near_fluid(p, nl, [&](std::size_t i) {
-    const CentreLineOffset c = locate(p.position[i], nodes);
+    const CentreLineOffset c = locate(in_plate_plane<D>(p.position[i]), nodes);
     if (!c.in_span) return;
     double offset = c.offset;
     if (std::abs(offset) < contact && contact_correction(p, i, c, nodes, node_velocity, half, contact, dt, offset))
       ++corrected;
     if (std::abs(offset) <= band)
-      now.push_back({p.id[i], static_cast<std::int8_t>(offset >= 0.0 ? 1 : -1), p.position[i], c.s});
+      now.push_back({p.id[i], static_cast<std::int8_t>(offset >= 0.0 ? 1 : -1), in_plate_plane<D>(p.position[i]), c.s});
   });
   contacts_ += corrected;
 
@@ -219,9 +253,10 @@ std::size_t PlateCoupling::keep_fluid_out(Particles& p, const NeighbourList& nl,
 
 // One particle of keep_fluid_out() closer than `contact` to the centre line (c: where it is).
 // Returns true if it was corrected; `offset` is then its new signed offset.
-bool PlateCoupling::contact_correction(Particles& p, std::size_t i, const CentreLineOffset& c,
-                                       const std::vector<Vec2>& nodes, const std::vector<Vec2>& node_velocity,
-                                       double half, double contact, double dt, double& offset) {
+template <int D>
+bool BasicPlateCoupling<D>::contact_correction(Particles& p, std::size_t i, const CentreLineOffset& c,
+                                               const std::vector<Vec2>& nodes, const std::vector<Vec2>& node_velocity,
+                                               double half, double contact, double dt, double& offset) {
   const auto id = static_cast<std::size_t>(p.id[i]);
   const int known = id < side_.size() ? side_[id] : 0;
   const double side = known != 0 ? known : (c.offset >= 0.0 ? 1.0 : -1.0);
@@ -229,12 +264,14 @@ bool PlateCoupling::contact_correction(Particles& p, std::size_t i, const Centre
   const Vec2 a = nodes[k], e = normalized(nodes[k + 1] - a);
   const Vec2 n = side * perp(e);  // out of the plate, towards the particle's side
   const Vec2 v_plate = (1.0 - c.t) * node_velocity[k] + c.t * node_velocity[k + 1];
-  const double approach = dot(p.velocity[i] - v_plate, n);
+  const double approach = dot(in_plate_plane<D>(p.velocity[i]) - v_plate, n);
   const bool inside = side * c.offset < half;
   if (approach >= 0.0 && !inside) return false;  // close, but leaving: nothing to do
   if (approach < 0.0) {  // stop the approach (slip: the tangential velocity is kept)
-    p.velocity[i] -= approach * n;
-    const Vec2 impulse_on_plate = (p.mass * approach) * n;  // the momentum the fluid lost into the plate
+    p.velocity[i] -= from_plate_plane<D>(approach * n, 0.0);
+    // The momentum the fluid lost into the plate (per metre of breadth: in 3D over the plate's width).
+    Vec2 impulse_on_plate = (p.mass * approach) * n;
+    if constexpr (D == 3) impulse_on_plate = impulse_on_plate / width();
     contact_force_[k] += ((1.0 - c.t) / dt) * impulse_on_plate;
     contact_force_[k + 1] += (c.t / dt) * impulse_on_plate;
   }
@@ -243,24 +280,26 @@ bool PlateCoupling::contact_correction(Particles& p, std::size_t i, const Centre
   // together: non-finite at 0.40 s of the pulse case.)
   if (inside) {
     const double target = half + 0.5 * (contact - half);
-    p.position[i] += (target - side * c.offset) * n;
+    p.position[i] += from_plate_plane<D>((target - side * c.offset) * n, 0.0);
     offset = side * target;
   }
   return true;
 }
 
-std::size_t PlateCoupling::fluid_inside(const Particles& p, const NeighbourList& nl) {
+template <int D>
+std::size_t BasicPlateCoupling<D>::fluid_inside(const Particles& p, const NeighbourList& nl) {
   const std::vector<Vec2> nodes = beam_.node_positions();
   const double half = 0.5 * layout_.spec.thickness;
   std::size_t inside = 0;
   for_each_near_fluid(p, nl, [&](std::size_t i) {
-    const CentreLineOffset c = locate(p.position[i], nodes);
+    const CentreLineOffset c = locate(in_plate_plane<D>(p.position[i]), nodes);
     if (c.in_span && std::abs(c.offset) < half) ++inside;
   });
   return inside;
 }
 
-void PlateCoupling::save_state(StateWriter& w, const std::string& prefix) const {
+template <int D>
+void BasicPlateCoupling<D>::save_state(StateWriter& w, const std::string& prefix) const {
   beam_.save_state(w, prefix + ".beam");
   w.array(prefix + ".force", force_);
   w.array(prefix + ".velocity", velocity_);
@@ -275,7 +314,8 @@ void PlateCoupling::save_state(StateWriter& w, const std::string& prefix) const 
   w.value(prefix + ".first_crossing", first_crossing_);
 }
 
-void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
+template <int D>
+void BasicPlateCoupling<D>::load_state(StateReader& r, const std::string& prefix) {
   beam_.load_state(r, prefix + ".beam");
   force_ = r.array<Vec2>(prefix + ".force");
   velocity_ = r.array<Vec2>(prefix + ".velocity");
@@ -291,5 +331,8 @@ void PlateCoupling::load_state(StateReader& r, const std::string& prefix) {
   contact_force_ = r.array<Vec2>(prefix + ".contact_force");
   first_crossing_ = r.value<PlateCrossing>(prefix + ".first_crossing");
 }
+
+template class BasicPlateCoupling<2>;
+template class BasicPlateCoupling<3>;
 
 }  // namespace sloshsph

@@ -15,6 +15,12 @@
 // damps the plate's unresolved high modes). Stable with the weakly compressible scheme; with ISPH
 // a plate much lighter than the fluid it moves is noisy (the added-mass effect of staggered
 // couplings, measured in docs/physics.md).
+//
+// In 3D (issue 31) a plate spans the breadth of a box or prism: the same beam, per metre of
+// breadth, bends in the plane (x, z) of the section (cylindrical bending), its section's particles
+// standing on each lattice plane across the breadth (`planes`: their y). Its loads are the mean over
+// the planes of each section particle's face load (per metre of breadth, as in 2D); the fluid's
+// load along y is taken by the plate's supports and does not enter the beam.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -32,30 +38,41 @@ namespace sloshsph {
 struct PlateCrossing {
   double time = -1.0;     // s (-1: none)
   std::int32_t id = -1;   // particle id
-  Vec2 position;          // m, where it was seen on the other side
+  Vec2 position;          // m, where it was seen on the other side (in 3D its (x, z))
   double arc_length = 0;  // m from the plate's `from` end
 };
 
 // The beam of a plate (SI, per metre of out-of-plane width; gravity enters as the frame force).
 BeamSpec plate_beam_spec(const PlateSpec& spec);
 
-class PlateCoupling {
+template <int D>
+class BasicPlateCoupling {
  public:
+  using Particles = BasicParticles<D>;
+  using FrameForce = BasicFrameForce<D>;
+  using NeighbourList = BasicNeighbourList<D>;
+
   // `first_wall` is the index of the plate's first particle among the wall particles (its store
-  // index less n_fluid: it stays valid when leaked fluid particles are removed).
-  PlateCoupling(const PlateLayout& layout, std::size_t first_wall);
+  // index less n_fluid: it stays valid when leaked fluid particles are removed). 3D: `planes` are
+  // the y of the lattice planes across the breadth, `dp` their spacing; section particle k stands
+  // on plane m as particle first_wall + k * planes.size() + m (geometry/prism_tank.hpp's
+  // on_planes_across order).
+  BasicPlateCoupling(const PlateLayout& layout, std::size_t first_wall, std::vector<double> planes = {}, double dp = 0.0);
 
   const PlateSpec& spec() const { return layout_.spec; }
   const Beam& beam() const { return beam_; }
   std::size_t first_wall() const { return first_wall_; }
-  std::size_t count() const { return points_.size(); }
+  std::size_t count() const { return points_.size() * plane_count(); }  // wall particles
+  // The breadth the beam's per-metre quantities are multiplied by for whole ones: 1 m in 2D (the
+  // 2D outputs are per metre), planes x dp in 3D.
+  double width() const { return D == 2 ? 1.0 : static_cast<double>(planes_.size()) * dp_; }
 
   // Writes the plate's configuration into its wall particles: position, normal, and the wall
   // motion (velocity, acceleration) of the store (which must be sized for the walls).
   void place(Particles& p) const;
 
-  // The fluid's force on each face particle from the wall pressures now in the store (N/m),
-  // and their sum (the force of the fluid on the plate).
+  // The fluid's force on each face particle from the wall pressures now in the store (N/m; in 3D
+  // the mean over the planes), and their sum (the force of the fluid on the plate, per metre).
   Vec2 fluid_force(const Particles& p, const FrameForce& frame, double rho0);
 
   // One plate step of dt under the fluid loads of fluid_force() and the frame's body force
@@ -84,7 +101,7 @@ class PlateCoupling {
   std::size_t fluid_inside(const Particles& p, const NeighbourList& nl);
 
   Vec2 last_force() const { return last_force_; }                 // N/m, fluid on plate, last step
-  Vec2 displacement_at(double fraction) const;                    // m, centre line at s = fraction L
+  Vec2 displacement_at(double fraction) const;                    // m, centre line at s = fraction L (3D: x, z)
   Vec2 tip_displacement() const { return displacement_at(1.0); }  // the `to` end
   double strain_energy() const { return beam_.strain_energy(); }
   double kinetic_energy() const { return beam_.kinetic_energy(); }
@@ -109,14 +126,21 @@ class PlateCoupling {
                           double& offset);
   // Calls f(i) once for each fluid particle listed by the neighbour rows of the plate's particles.
   template <class F> void for_each_near_fluid(const Particles& p, const NeighbourList& nl, F&& f);
+  std::size_t plane_count() const { return D == 2 ? 1 : planes_.size(); }
+  // Store index of section particle k on plane m.
+  std::size_t store_index(const Particles& p, std::size_t k, std::size_t m) const {
+    return p.n_fluid + first_wall_ + k * plane_count() + m;
+  }
 
   PlateLayout layout_;
   std::size_t first_wall_;
+  std::vector<double> planes_;  // 3D: y of each plane across the breadth
+  double dp_ = 0.0;
   Beam beam_;
   std::vector<BeamMaterialPoint> points_;
-  std::vector<Vec2> force_;         // per particle, N/m
-  std::vector<Vec2> velocity_;      // per particle, m/s (tank frame)
-  std::vector<Vec2> acceleration_;  // per particle, m/s^2
+  std::vector<Vec2> force_;         // per section particle, N/m
+  std::vector<Vec2> velocity_;      // per section particle, m/s (tank frame)
+  std::vector<Vec2> acceleration_;  // per section particle, m/s^2
   Vec2 last_force_;
   double max_abs_tip_dx_ = 0.0;
   // Crossing watch: the side (+1/-1, 0 unknown) of each fluid particle id near the plate.
@@ -129,5 +153,10 @@ class PlateCoupling {
   std::vector<Vec2> contact_force_;  // per beam node, N/m: for the next step
   PlateCrossing first_crossing_;
 };
+
+using PlateCoupling = BasicPlateCoupling<2>;
+using PlateCoupling3 = BasicPlateCoupling<3>;
+extern template class BasicPlateCoupling<2>;
+extern template class BasicPlateCoupling<3>;
 
 }  // namespace sloshsph

@@ -524,15 +524,17 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
   }
   if (!sim.plates().empty()) {
     nlohmann::json plates = nlohmann::json::array();
-    for (const PlateCoupling& pl : sim.plates()) {
+    const std::string up = D == 2 ? "y" : "z";  // the section's height: y in 2D, z in 3D
+    for (const BasicPlateCoupling<D>& pl : sim.plates()) {
       const Vec2 tip = pl.tip_displacement();
       nlohmann::json j = {{"name", pl.spec().name},
                           {"max_abs_tip_dx_m", pl.max_abs_tip_dx()},
                           {"final_tip_dx_m", tip.x},
-                          {"final_tip_dy_m", tip.y},
+                          {"final_tip_d" + up + "_m", tip.y},
                           {"length_m", pl.beam().length()},
                           {"elements", pl.beam().element_count()},
                           {"wall_particles", pl.count()},
+                          {"width_m", pl.width()},
                           {"bending_stiffness_N_m", pl.beam().section().bending},
                           {"mass_per_length_kg_per_m2", pl.spec().density * pl.spec().thickness},
                           {"crossings", pl.crossings()},
@@ -542,7 +544,7 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
         j["first_crossing_time_s"] = c.time;
         j["first_crossing_id"] = c.id;
         j["first_crossing_x"] = c.position.x;
-        j["first_crossing_y"] = c.position.y;
+        j["first_crossing_" + up] = c.position.y;
         j["first_crossing_arc_length_m"] = c.arc_length;
       }
       plates.push_back(j);

@@ -150,31 +150,27 @@ BasicSimulation<D>::BasicSimulation(const CaseSpec& spec, SimulationStart start)
 // plate under a standing load starts at t = 0 deflected, at rest.
 template <int D>
 void BasicSimulation<D>::start_plates() {
-  if constexpr (D == 2) {
-    if (scene_.plates.empty()) return;
-    Particles& p = scene_.particles;
-    p.wall_motion_velocity.assign(p.n_wall(), Vec2{});
-    p.wall_motion_acceleration.assign(p.n_wall(), Vec2{});
-    for (std::size_t k = 0; k < scene_.plates.size(); ++k) {
-      plates_.emplace_back(scene_.plates[k], scene_.plate_first[k] - p.n_fluid);
-      plates_.back().place(p);
-    }
-    acc_plate_force_.assign(plates_.size(), Vec2{});
+  if (scene_.plates.empty()) return;
+  BasicParticles<D>& p = scene_.particles;
+  p.wall_motion_velocity.assign(p.n_wall(), Vec<D>{});
+  p.wall_motion_acceleration.assign(p.n_wall(), Vec<D>{});
+  for (std::size_t k = 0; k < scene_.plates.size(); ++k) {
+    plates_.emplace_back(scene_.plates[k], scene_.plate_first[k] - p.n_fluid, scene_.plate_planes, scene_.dp);
+    plates_.back().place(p);
   }
+  acc_plate_force_.assign(plates_.size(), Vec2{});
 }
 
 // After each fluid step (staggered, run/plate_coupling.hpp): the fluid's face pressures load the
 // plates, which move to t + dt and carry their wall particles with them.
 template <int D>
-void BasicSimulation<D>::advance_plates(double dt, const FrameForce& frame) {
-  if constexpr (D == 2) {
-    Particles& p = scene_.particles;
-    const FrameForce before = frame_force(spec_.fluid.gravity, tank_motion());
-    for (std::size_t k = 0; k < plates_.size(); ++k) {
-      acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
-      plates_[k].advance(p, dt, frame);
-      plates_[k].keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, dt, time_ + dt);
-    }
+void BasicSimulation<D>::advance_plates(double dt, const BasicFrameForce<D>& frame) {
+  BasicParticles<D>& p = scene_.particles;
+  const BasicFrameForce<D> before = frame_of(tank_motion());
+  for (std::size_t k = 0; k < plates_.size(); ++k) {
+    acc_plate_force_[k] += dt * plates_[k].fluid_force(p, before, spec_.fluid.density);
+    plates_[k].advance(p, dt, frame);
+    plates_[k].keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, dt, time_ + dt);
   }
 }
 
@@ -297,16 +293,26 @@ void BasicSimulation<D>::build_columns() {
   });
   if (spec_.scheme.shifting != ShiftingModel::none)
     add_column("shifts_limited", "1", [](S s, B) { return static_cast<double>(s.shifts_limited_); });
+  // The plates: in 2D per metre (N/m, J/m) in the section (x, y); in 3D whole (the per-metre beam
+  // times the plate's width) in (x, z), the section's height named z.
+  const std::string up = D == 2 ? "y" : "z";
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     const std::string& n = plates_[k].spec().name;
-    auto force = [k](S s) { return s.acc_dt_ > 0.0 ? s.acc_plate_force_[k] / s.acc_dt_ : s.plates_[k].last_force(); };
+    const double width = plates_[k].width();  // 1 in 2D: the same bits
+    auto force = [k, width](S s) {
+      const Vec2 per_metre = s.acc_dt_ > 0.0 ? s.acc_plate_force_[k] / s.acc_dt_ : s.plates_[k].last_force();
+      return D == 2 ? per_metre : width * per_metre;
+    };
     add_column("plate_dx:" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().x; });
-    add_column("plate_dy:" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().y; });
+    add_column("plate_d" + up + ":" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().y; });
     add_column("plate_mid_dx:" + n, "m", [k](S s, B) { return s.plates_[k].displacement_at(0.5).x; });
-    add_column("plate_mid_dy:" + n, "m", [k](S s, B) { return s.plates_[k].displacement_at(0.5).y; });
-    add_column("F_plate_x:" + n, "N/m", [force](S s, B) { return force(s).x; });
-    add_column("F_plate_y:" + n, "N/m", [force](S s, B) { return force(s).y; });
-    add_column("E_plate:" + n, "J/m", [k](S s, B) { return s.plates_[k].strain_energy() + s.plates_[k].kinetic_energy(); });
+    add_column("plate_mid_d" + up + ":" + n, "m", [k](S s, B) { return s.plates_[k].displacement_at(0.5).y; });
+    add_column("F_plate_x:" + n, D == 2 ? "N/m" : "N", [force](S s, B) { return force(s).x; });
+    add_column("F_plate_" + up + ":" + n, D == 2 ? "N/m" : "N", [force](S s, B) { return force(s).y; });
+    add_column("E_plate:" + n, energy_unit, [k, width](S s, B) {
+      const double per_metre = s.plates_[k].strain_energy() + s.plates_[k].kinetic_energy();
+      return D == 2 ? per_metre : width * per_metre;
+    });
     add_column("plate_inside:" + n, "1", [k](S, B b) { return b.plate_inside[k]; });
     add_column("plate_contacts:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].contacts()); });
     add_column("plate_crossings:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].crossings()); });
@@ -362,13 +368,12 @@ void BasicSimulation<D>::settle() {
     scheme_.step(p, in);
     const double factor = std::exp(-in.dt / tau);
     for (std::size_t i = 0; i < p.n_fluid; ++i) p.velocity[i] = factor * p.velocity[i];
-    if constexpr (D == 2)
-      for (PlateCoupling& plate : plates_) {  // the plates settle with the fluid, damped alike
-        plate.fluid_force(p, in.frame, spec_.fluid.density);
-        plate.advance(p, in.dt, in.frame);
-        plate.keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, in.dt, -1.0);
-        plate.damp(p, factor);
-      }
+    for (BasicPlateCoupling<D>& plate : plates_) {  // the plates settle with the fluid, damped alike
+      plate.fluid_force(p, in.frame, spec_.fluid.density);
+      plate.advance(p, in.dt, in.frame);
+      plate.keep_fluid_out(p, scheme_.neighbours(), spec_.particles.dp, in.dt, -1.0);
+      plate.damp(p, factor);
+    }
     t += in.dt;
     // A settle that blows up fails the run here, with what and where, before a runaway
     // particle reaches the neighbour search (found: the thesis free surface at dp = 0.1 m).
@@ -391,7 +396,7 @@ void BasicSimulation<D>::settle() {
       throw Interrupted(what);
     }
   }
-  for (PlateCoupling& plate : plates_) plate.restart();
+  for (BasicPlateCoupling<D>& plate : plates_) plate.restart();
   max_speed_ = 0.0;
   for (std::size_t i = 0; i < p.n_fluid; ++i) max_speed_ = std::max(max_speed_, norm(p.velocity[i]));
 }
@@ -454,7 +459,7 @@ void BasicSimulation<D>::step() {
     throw;
   }
 
-  if (!plates_.empty()) advance_plates(dt, frame_force(spec_.fluid.gravity, after));  // 2D only
+  if (!plates_.empty()) advance_plates(dt, frame_of(after));
   if (structure_) after.displacement.x += structure_->displacement();
   if (structure_y_) after.displacement_y += structure_y_->displacement();
   // Base shear: the walls and the screens (fixed to the tank) act on the fluid.
@@ -616,8 +621,7 @@ typename BasicSimulation<D>::SampleBasis BasicSimulation<D>::sample_basis() {
         },
         D);
   }
-  if constexpr (D == 2)
-    for (PlateCoupling& pl : plates_) b.plate_inside.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
+  for (BasicPlateCoupling<D>& pl : plates_) b.plate_inside.push_back(static_cast<double>(pl.fluid_inside(p, scheme_.neighbours())));
   b.motion = tank_motion();
   b.fluid_mass = fluid_mass();
   if (acc_dt_ > 0.0) {

@@ -76,8 +76,8 @@ enum class SimulationStart { settled, for_checkpoint };
 
 // In 2D (Simulation) every feature of a case; in 3D (Simulation3, tank.dimensions = 3) the ISPH
 // scheme, a translation along excitation.direction, gauges, point probes and the structure with
-// its sway along x and y, and porous screens extruded over the breadth (issue 31): the explicit
-// slats and plates below are 2D only, and the case reader refuses them in 3D.
+// its sway along x and y, porous screens and explicit slats, and plates across the breadth of a box
+// or prism (issue 31; run/plate_coupling.hpp).
 template <int D>
 class BasicSimulation {
  public:
@@ -117,7 +117,7 @@ class BasicSimulation {
   // [structure.y] (3D): the structure's sway along y (nullptr without one).
   const StructureCoupling* structure_y() const { return structure_y_ ? &*structure_y_ : nullptr; }
   // [[plates]]: the elastic plates, in case order.
-  const std::vector<PlateCoupling>& plates() const { return plates_; }
+  const std::vector<BasicPlateCoupling<D>>& plates() const { return plates_; }
   const std::vector<LeakRecord>& leaks() const { return leaks_; }
   std::size_t leaked() const { return leaks_.size(); }
   // Fluid particles stopped at the tank walls since t = 0 (scheme.wall_contact).
@@ -161,7 +161,7 @@ class BasicSimulation {
   BasicFrameForce<D> frame_of(const BaseMotion& m) const { return frame_force_in<D>(spec_.fluid.gravity, m); }
   BasicWallContact<D> wall_contact(double dt);
   void start_plates();
-  void advance_plates(double dt, const FrameForce& frame);
+  void advance_plates(double dt, const BasicFrameForce<D>& frame);
   void build_columns();
   void add_column(std::string name, std::string unit,
                   std::function<double(const BasicSimulation&, const SampleBasis&)> value);
@@ -210,7 +210,7 @@ class BasicSimulation {
   double acc_tld_force_y_ = 0.0;
   // [[plates]] (Dincer 2019): elastic plates moved by the fluid, and the interval sums of dt x the
   // fluid force on each.
-  std::vector<PlateCoupling> plates_;
+  std::vector<BasicPlateCoupling<D>> plates_;
   std::vector<Vec2> acc_plate_force_;
   double sloshing_force_ = 0.0;
   double acc_tld_force_ = 0.0;

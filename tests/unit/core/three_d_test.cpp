@@ -349,6 +349,7 @@ TEST(ThreeD, SpsClosureOfAPlaneFlowIsThePlaneOne) {
 #include <cmath>
 #include <string>
 
+#include "sloshsph/core/errors.hpp"
 #include "sloshsph/geometry/scene.hpp"
 #include "sloshsph/geometry/screens.hpp"
 #include "sloshsph/geometry/tank.hpp"
@@ -456,6 +457,48 @@ TEST(ThreeD, FillBlocksInACylinderHoldTheLatticeInsideTheCircle) {
   }
   EXPECT_NEAR(spec.fill.depth, static_cast<double>(p.n_fluid) * dp * dp * dp / (std::numbers::pi * R * R), 1e-12);
   EXPECT_NEAR(scene.still_level, spec.fill.depth, 1e-12);
+}
+
+// Issue 31: an elastic plate in a 3D box (cases/hydrostatic_plate.toml made a slab 4 dp broad) is its
+// section's plate particles (plate_layout) on each of the 4 lattice planes across the breadth,
+// section particle k on plane m at k * 4 + m, normals with no y part; they are the last wall
+// particles; no fluid particle is closer than 0.9 dp to one (as in 2D). A cylinder has no plates.
+TEST(ThreeD, PlateStandsOnTheLatticePlanesAcrossTheBreadth) {
+  std::string text = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/hydrostatic_plate.toml");
+  text.replace(text.find("shape = \"rectangle\""), 19, "dimensions = 3\nshape = \"rectangle\"\nbreadth = 0.08");
+  text.replace(text.find("[[probes.pressure]]"), std::string::npos, "");
+  const CaseSpec spec = read_case_text(text, "plate3d.toml", {});
+  const Scene3 scene = build_scene3(spec);
+  const double dp = 0.02;
+  ASSERT_EQ(scene.plates.size(), 1u);
+  const std::vector<double> planes = {0.01, 0.03, 0.05, 0.07};
+  ASSERT_EQ(scene.plate_planes.size(), planes.size());
+  for (std::size_t m = 0; m < planes.size(); ++m) EXPECT_NEAR(scene.plate_planes[m], planes[m], 1e-15);
+  const PlateLayout& layout = scene.plates[0];
+  const Particles3& p = scene.particles;
+  const std::size_t count = layout.walls.size() * planes.size();
+  EXPECT_EQ(scene.plate_first[0] + count, p.size());  // the last wall particles
+  std::vector<Vec3> plate;
+  for (std::size_t k = 0; k < layout.walls.size(); ++k)
+    for (std::size_t m = 0; m < planes.size(); ++m) {
+      const std::size_t w = scene.plate_first[0] + k * planes.size() + m;
+      EXPECT_NEAR(p.position[w].x, layout.walls[k].position.x, 1e-15);
+      EXPECT_NEAR(p.position[w].y, planes[m], 1e-15);
+      EXPECT_NEAR(p.position[w].z, layout.walls[k].position.y, 1e-15);
+      EXPECT_EQ(p.normal[w].y, 0.0);
+      plate.push_back(p.position[w]);
+    }
+  double closest = 1.0;
+  for (std::size_t i = 0; i < p.n_fluid; ++i)
+    for (const Vec3& q : plate) closest = std::min(closest, norm(p.position[i] - q));
+  EXPECT_GE(closest, 0.9 * dp);
+  // The water above the plate only (the block from its upper face): 100 x 50 section nodes a plane.
+  EXPECT_EQ(p.n_fluid, 100u * 50u * planes.size());
+  const std::string cylinder = read_case_file_text(std::string(SLOSHSPH_SOURCE_DIR) + "/cases/cylinder3d_sloshing.toml");
+  EXPECT_THROW(read_case_text(cylinder + "\n[[plates]]\nname = \"p\"\nx = 0.15\nheight = 0.1\nthickness = 0.02\n"
+                              "youngs_modulus = 1e7\ndensity = 1100\n",
+                              "cyl.toml", {}),
+               InputError);
 }
 
 // Issue 31, section 2: explicit slats in an upright cylinder (R = 0.15 m, dp = 10 mm). A screen in

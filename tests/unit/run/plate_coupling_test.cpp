@@ -178,3 +178,82 @@ TEST(PlateCoupling, ContactPutsAnInvadingParticleBackWithSlip) {
 
 }  // namespace
 }  // namespace sloshsph
+
+namespace sloshsph {
+namespace {
+
+// Issue 31: a plate across the breadth of a 3D tank. Its section particles stand on `planes`
+// lattice planes (y = (m + 1/2) dp), particle k * planes + m; the beam is the 2D one, per metre of
+// breadth.
+Particles3 plate_particles_3d(const PlateLayout& l, const std::vector<double>& planes, double p0) {
+  Particles3 p;
+  p.resize(l.walls.size() * planes.size());
+  p.n_fluid = 0;
+  for (std::size_t k = 0; k < l.walls.size(); ++k)
+    for (std::size_t m = 0; m < planes.size(); ++m) {
+      const std::size_t w = k * planes.size() + m;
+      p.position[w] = {l.walls[k].position.x, planes[m], l.walls[k].position.y};
+      p.normal[w] = {l.walls[k].normal.x, 0.0, l.walls[k].normal.y};
+      p.pressure[w] = l.walls[k].normal.y > 0.5 ? p0 : 0.0;
+    }
+  p.wall_motion_velocity.assign(p.size(), Vec3{});
+  p.wall_motion_acceleration.assign(p.size(), Vec3{});
+  return p;
+}
+
+// Reference: the same face pressure gives the same load per metre of breadth as in 2D, -p0 L on
+// the 2 m upper face (1e-9 N/m), whatever the number of planes; with gravity the pressure carried
+// dp/2 to the face as in 2D; the width is planes x dp.
+TEST(PlateCoupling, ThreeDimensionalPlateCarriesThePressureIntegralPerMetre) {
+  const double dp = 0.02;
+  const PlateLayout l = plate_layout(floor_plate(), dp, 2.66 * dp, box(2.0, 1.6), at("test"), "plates.0");
+  const std::vector<double> planes = {0.01, 0.03, 0.05, 0.07};
+  PlateCoupling3 plate(l, 0, planes, dp);
+  EXPECT_EQ(plate.count(), 4 * l.walls.size());
+  EXPECT_DOUBLE_EQ(plate.width(), 0.08);
+  Particles3 p = plate_particles_3d(l, planes, 9810.0);
+  const Vec2 f = plate.fluid_force(p, FrameForce3{}, 1000.0);
+  EXPECT_NEAR(f.y, -9810.0 * 2.0, 1e-9);
+  EXPECT_NEAR(f.x, 0.0, 1e-9);
+  FrameForce3 g;
+  g.uniform = {0.0, 0.0, -9.81};
+  EXPECT_NEAR(plate.fluid_force(p, g, 1000.0).y, -(9810.0 - 1000.0 * 9.81 * 0.01) * 2.0, 1e-9);
+  // A pressure on one plane only is a quarter of the load per metre.
+  for (std::size_t w = 0; w < p.size(); ++w)
+    if (w % planes.size() != 0) p.pressure[w] = 0.0;
+  EXPECT_NEAR(plate.fluid_force(p, FrameForce3{}, 1000.0).y, -9810.0 * 2.0 / 4.0, 1e-9);
+}
+
+// Reference: under a uniform face load the 3D plate deflects as the 2D one to round-off (the same
+// beam), and every plane's particles follow the beam: at mid-span the particles of all four planes
+// stand at the same height, moved down with it.
+TEST(PlateCoupling, ThreeDimensionalPlateDeflectsAsTheTwoDimensionalOne) {
+  const double dp = 0.02;
+  const PlateSpec spec = floor_plate();
+  const PlateLayout l = plate_layout(spec, dp, 2.66 * dp, box(2.0, 1.6), at("test"), "plates.0");
+  const std::vector<double> planes = {0.01, 0.03, 0.05, 0.07};
+  PlateCoupling flat(l, 0);
+  Particles p2 = plate_particles(l, 9810.0);
+  const double w2 = settle_midspan(flat, p2, 9810.0);
+  PlateCoupling3 plate(l, 0, planes, dp);
+  Particles3 p = plate_particles_3d(l, planes, 9810.0);
+  for (int step = 0; step < 3000; ++step) {
+    for (std::size_t w = 0; w < p.size(); ++w) p.pressure[w] = p.normal[w].z > 0.5 ? 9810.0 : 0.0;
+    plate.fluid_force(p, FrameForce3{}, 1000.0);
+    plate.advance(p, 1.0e-3, FrameForce3{});
+  }
+  const double w3 = plate.displacement_at(0.5).y;
+  EXPECT_NEAR(w3, w2, 1e-12 + 1e-9 * std::abs(w2));
+  EXPECT_NEAR(-w3 / clamped_midspan(spec, 9810.0), 1.0, 0.01);
+  for (std::size_t k = 0; k < l.walls.size(); ++k)
+    for (std::size_t m = 0; m < planes.size(); ++m) {
+      const std::size_t w = k * planes.size() + m;
+      EXPECT_DOUBLE_EQ(p.position[w].z, p2.position[k].y);
+      EXPECT_DOUBLE_EQ(p.position[w].x, p2.position[k].x);
+      EXPECT_EQ(p.position[w].y, planes[m]);
+      EXPECT_EQ(p.normal[w].y, 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace sloshsph
