@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sloshsph/core/errors.hpp"
+#include "sloshsph/geometry/prism_tank.hpp"
 
 namespace sloshsph {
 namespace {
@@ -15,16 +16,17 @@ BeamSupport beam_support(PlateSupport s) {
                                      : BeamSupport::kFree;
 }
 
-// A vector of the store in the plate's plane (the section: (x, y) in 2D, (x, z) in 3D), and back.
+// A vector of the store in the plate's plane (the section: (x, y) in 2D, (x, z) in 3D), and back
+// (at breadth y in 3D: geometry/prism_tank.hpp's in_section and at_breadth).
 template <int D>
 Vec2 in_plate_plane(const Vec<D>& v) {
   if constexpr (D == 2) return v;
-  else return {v.x, v.z};
+  else return in_section(v);
 }
 template <int D>
 Vec<D> from_plate_plane(Vec2 v, double y) {
   if constexpr (D == 2) return v;
-  else return {v.x, y, v.y};
+  else return at_breadth(v, y);
 }
 
 }  // namespace
@@ -105,7 +107,7 @@ Vec2 BasicPlateCoupling<D>::fluid_force(const Particles& p, const FrameForce& fr
         force_[k] += (-p_face * face->length) * n;
       }
     }
-    if constexpr (D == 3) force_[k] = force_[k] / static_cast<double>(planes_.size());  // per metre: the planes' mean
+    force_[k] = force_[k] / static_cast<double>(plane_count());  // per metre: the planes' mean (2D: / 1, exact)
     total += force_[k];
   }
   last_force_ = total;
@@ -269,9 +271,9 @@ bool BasicPlateCoupling<D>::contact_correction(Particles& p, std::size_t i, cons
   if (approach >= 0.0 && !inside) return false;  // close, but leaving: nothing to do
   if (approach < 0.0) {  // stop the approach (slip: the tangential velocity is kept)
     p.velocity[i] -= from_plate_plane<D>(approach * n, 0.0);
-    // The momentum the fluid lost into the plate (per metre of breadth: in 3D over the plate's width).
-    Vec2 impulse_on_plate = (p.mass * approach) * n;
-    if constexpr (D == 3) impulse_on_plate = impulse_on_plate / width();
+    // The momentum the fluid lost into the plate, per metre of breadth (2D: the width is 1 m, and
+    // the particle's mass is already per metre).
+    const Vec2 impulse_on_plate = ((p.mass * approach) * n) / width();
     contact_force_[k] += ((1.0 - c.t) / dt) * impulse_on_plate;
     contact_force_[k + 1] += (c.t / dt) * impulse_on_plate;
   }

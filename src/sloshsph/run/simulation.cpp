@@ -298,10 +298,9 @@ void BasicSimulation<D>::build_columns() {
   const std::string up = D == 2 ? "y" : "z";
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     const std::string& n = plates_[k].spec().name;
-    const double width = plates_[k].width();  // 1 in 2D: the same bits
+    const double width = plates_[k].width();  // 1 m in 2D (x 1 is exact: the same bits)
     auto force = [k, width](S s) {
-      const Vec2 per_metre = s.acc_dt_ > 0.0 ? s.acc_plate_force_[k] / s.acc_dt_ : s.plates_[k].last_force();
-      return D == 2 ? per_metre : width * per_metre;
+      return width * (s.acc_dt_ > 0.0 ? s.acc_plate_force_[k] / s.acc_dt_ : s.plates_[k].last_force());
     };
     add_column("plate_dx:" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().x; });
     add_column("plate_d" + up + ":" + n, "m", [k](S s, B) { return s.plates_[k].tip_displacement().y; });
@@ -309,10 +308,8 @@ void BasicSimulation<D>::build_columns() {
     add_column("plate_mid_d" + up + ":" + n, "m", [k](S s, B) { return s.plates_[k].displacement_at(0.5).y; });
     add_column("F_plate_x:" + n, D == 2 ? "N/m" : "N", [force](S s, B) { return force(s).x; });
     add_column("F_plate_" + up + ":" + n, D == 2 ? "N/m" : "N", [force](S s, B) { return force(s).y; });
-    add_column("E_plate:" + n, energy_unit, [k, width](S s, B) {
-      const double per_metre = s.plates_[k].strain_energy() + s.plates_[k].kinetic_energy();
-      return D == 2 ? per_metre : width * per_metre;
-    });
+    add_column("E_plate:" + n, energy_unit,
+               [k, width](S s, B) { return width * (s.plates_[k].strain_energy() + s.plates_[k].kinetic_energy()); });
     add_column("plate_inside:" + n, "1", [k](S, B b) { return b.plate_inside[k]; });
     add_column("plate_contacts:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].contacts()); });
     add_column("plate_crossings:" + n, "1", [k](S s, B) { return static_cast<double>(s.plates_[k].crossings()); });
