@@ -225,6 +225,7 @@ struct TimeSpec {
   double dt = 5.0e-4;        // s, fixed step (or the ceiling of an adaptive step)
   bool adaptive = false;     // CFL-adaptive step, thesis 2.6.3.2
   double cfl = 0.1;          // factor of dt <= cfl * min(dp / u_max, dp^2 / nu)
+  double dt_min = 0.0;       // s, the adaptive step's floor (0: none); held to the fixed step's bound
   double settle = 0.0;       // s, damped settling at rest before t = 0 (0: none)
 };
 

@@ -197,6 +197,7 @@ TimeSpec read_time(TableReader& r) {
   t.dt = r.positive("dt", t.dt);
   t.adaptive = r.boolean("adaptive", t.adaptive);
   t.cfl = r.in_range("cfl", t.cfl, 1e-3, 0.5);
+  t.dt_min = r.non_negative("dt_min", t.dt_min);
   t.settle = r.non_negative("settle", t.settle);
   r.finish();
   return t;
@@ -818,6 +819,27 @@ void resolve_fill(CaseSpec& s) {
   f.depth = 0.5 * (lo + hi);
 }
 
+// time.dt_min, the floor of the adaptive ISPH step: where it binds, the step no longer follows the
+// flow's speed and is in effect a fixed one, so it is held to the fixed step's bound `fixed_bound`
+// (s). A floor on WCSPH's own CFL step would lift it above its stability limit.
+template <class Fail>
+void check_step_floor(const CaseSpec& s, double fixed_bound, Fail&& fail) {
+  std::ostringstream m;
+  if (!s.time.adaptive || s.scheme.type != "isph")
+    fail("time.dt_min", "is the floor of the adaptive step of the ISPH scheme: it needs time.adaptive = true and "
+                        "scheme.type = \"isph\" (or leave it out)");
+  if (s.time.dt_min > s.time.dt) {
+    m << s.time.dt_min << " s is above the step's ceiling time.dt = " << s.time.dt << " s";
+    fail("time.dt_min", m.str());
+  }
+  if (s.time.dt_min > fixed_bound) {
+    m << s.time.dt_min << " s is above the bound of a fixed step, " << fixed_bound
+      << " s (0.4 dp / sqrt(g depth), with fill blocks 0.4 dp / sqrt(2 g head); 0.125 dp^2 / nu): where the "
+         "floor binds, the step is a fixed one";
+    fail("time.dt_min", m.str());
+  }
+}
+
 // Checks that involve several sections.
 void check_consistency(const CaseSpec& s, TableReader& root) {
   auto fail = [&](const std::string& key, const std::string& what) {
@@ -890,6 +912,7 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
       fail("time.dt", m.str());
     }
   }
+  if (s.time.dt_min > 0.0) check_step_floor(s, std::min(u_ref > 0.0 ? 0.4 * dp / u_ref : 1e9, viscous_bound), fail);
   if (s.output.sample_interval > s.time.end)
     fail("output.sample_interval", "is longer than the simulation (time.end)");
   check_counts(s, fail);
@@ -1230,8 +1253,12 @@ std::string resolved_case_toml(const CaseSpec& s) {
                                        {"wall_layers", s.particles.wall_layers},
                                        {"kernel", s.particles.kernel == KernelType::cubic_spline ? "cubic_spline" : "wendland"}});
   root.insert("scheme", scheme_table(s.scheme));
-  root.insert("time", toml::table{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl},
-                                  {"settle", s.time.settle}});
+  toml::table time{{"end", s.time.end}, {"dt", s.time.dt}, {"adaptive", s.time.adaptive}, {"cfl", s.time.cfl},
+                   {"settle", s.time.settle}};
+  // Only when set: the resolved case of a case without it stays as before (the committed run
+  // records' case.toml are compared with it as text).
+  if (s.time.dt_min > 0.0) time.insert("dt_min", s.time.dt_min);
+  root.insert("time", std::move(time));
   if (s.excitation.type != ExcitationType::none || s.excitation_y) {
     toml::table excitation = excitation_table(s.excitation);
     if (three_d) excitation.insert("direction", toml::array{s.excitation.direction.x, s.excitation.direction.y});

@@ -477,6 +477,11 @@ int run_loop(const CaseSpec& spec, BasicSimulation<D>& sim, RunFiles& files, Run
   s["h_m"] = sim.scene().h;
   s["dt_s"] = spec.time.dt;
   s["dt_adaptive"] = spec.time.adaptive;
+  if (spec.time.dt_min > 0.0)
+    s["dt_floor"] = {{"dt_min_s", spec.time.dt_min},
+                     {"steps", sim.floor_steps()},
+                     {"largest_cfl", sim.largest_floor_cfl()},
+                     {"counted_since_s", counted_since}};
   if constexpr (D == 2) {
     s["fluid_mass_kg_per_m"] = sim.scene().initial_fluid_mass;
     s["final_fluid_mass_kg_per_m"] = sim.fluid_mass();

@@ -398,19 +398,31 @@ void BasicSimulation<D>::settle() {
   for (std::size_t i = 0; i < p.n_fluid; ++i) max_speed_ = std::max(max_speed_, norm(p.velocity[i]));
 }
 
+// The bound of the adaptive step, thesis 2.6.3.2: dt <= min(0.1 dp / u_max, 0.1 dp^2 / nu) with the
+// factor time.cfl; plus the body-force bound 0.25 sqrt(h / |g - a|).
+template <int D>
+double BasicSimulation<D>::adaptive_bound() const {
+  double dt = HUGE_VAL;
+  const double dp = spec_.particles.dp;
+  const double cfl = spec_.time.cfl;
+  if (max_speed_ > 0.0) dt = std::min(dt, cfl * dp / max_speed_);
+  if (spec_.fluid.viscosity > 0.0) dt = std::min(dt, cfl * dp * dp / spec_.fluid.viscosity);
+  const Vec<D> body = frame_of(tank_motion()).uniform;
+  if (norm(body) > 0.0) dt = std::min(dt, 0.25 * std::sqrt(scene_.h / norm(body)));
+  return dt;
+}
+
+template <int D>
+bool BasicSimulation<D>::step_at_floor() const {
+  return spec_.time.adaptive && spec_.time.dt_min > 0.0 && adaptive_bound() < spec_.time.dt_min;
+}
+
 template <int D>
 double BasicSimulation<D>::next_dt() const {
   double dt = spec_.time.dt;
-  if (spec_.time.adaptive) {
-    // Thesis 2.6.3.2: dt <= min(0.1 dp / u_max, 0.1 dp^2 / nu) with the factor time.cfl;
-    // plus the body-force bound 0.25 sqrt(h / |g - a|). time.dt is the ceiling.
-    const double dp = spec_.particles.dp;
-    const double cfl = spec_.time.cfl;
-    if (max_speed_ > 0.0) dt = std::min(dt, cfl * dp / max_speed_);
-    if (spec_.fluid.viscosity > 0.0) dt = std::min(dt, cfl * dp * dp / spec_.fluid.viscosity);
-    const Vec<D> body = frame_of(tank_motion()).uniform;
-    if (norm(body) > 0.0) dt = std::min(dt, 0.25 * std::sqrt(scene_.h / norm(body)));
-  }
+  // The adaptive step between its floor time.dt_min (0: none; a spray droplet's speed would
+  // otherwise set the step of the whole tank) and its ceiling time.dt.
+  if (spec_.time.adaptive) dt = std::min(dt, std::max(adaptive_bound(), spec_.time.dt_min));
   // An explicit (weakly compressible) scheme takes its own CFL step; time.dt caps it.
   if (const auto stable = scheme_.stable_dt(scene_.particles, frame_of(tank_motion())))
     dt = std::min(dt, *stable);
@@ -421,6 +433,8 @@ template <int D>
 void BasicSimulation<D>::step() {
   const double dt = next_dt();
   if (!(dt > 0.0)) return;
+  const bool at_floor = step_at_floor();
+  const double speed_at_start = max_speed_;
   const BaseMotion before = tank_motion();
   // Body force at the middle of the step: second-order in time for the imposed motion.
   BaseMotion mid = ground_motion(time_ + 0.5 * dt);
@@ -506,6 +520,10 @@ void BasicSimulation<D>::step() {
   if (const std::size_t pinned = scheme_.diagnostics().pinned_particles; pinned > 0) {
     ++pinned_steps_;
     pinned_particles_ += pinned;
+  }
+  if (at_floor) {
+    ++floor_steps_;
+    largest_floor_cfl_ = std::max(largest_floor_cfl_, speed_at_start * dt / spec_.particles.dp);
   }
   check_state();
   remove_leaked();

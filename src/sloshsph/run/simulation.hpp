@@ -131,6 +131,10 @@ class BasicSimulation {
   // this object was made (a resumed run counts from the resume: not kept in checkpoints, so that
   // checkpoints stay readable across versions). last_step_pinned(): particles in the last step.
   std::size_t pinned_steps() const { return pinned_steps_; }
+  // time.dt_min: the steps that took the floor because the adaptive bound fell below it, and the
+  // largest u_max dt / dp of those steps; counted since this object was made, as pinned_steps.
+  std::size_t floor_steps() const { return floor_steps_; }
+  double largest_floor_cfl() const { return largest_floor_cfl_; }
   std::size_t pinned_particles() const { return pinned_particles_; }
   std::size_t last_step_pinned() const { return scheme_.diagnostics().pinned_particles; }
   double fluid_mass() const { return scene_.particles.mass * static_cast<double>(scene_.particles.n_fluid); }
@@ -148,6 +152,8 @@ class BasicSimulation {
 
  private:
   double next_dt() const;
+  double adaptive_bound() const;  // s, the adaptive step's bound before its ceiling and floor
+  bool step_at_floor() const;     // the next step takes time.dt_min
   void settle();
   void check_state() const;                         // at the current time and step
   void check_state(const std::string& when) const;  // RunFailure naming `when` otherwise
@@ -193,6 +199,8 @@ class BasicSimulation {
   BasicPairContactStep<D> pair_contact_;  // scheme.pair_contact
   std::size_t shifts_limited_ = 0;  // scheme.shifting: shifts cut by their cap or a wall, over the run
   std::size_t pinned_steps_ = 0, pinned_particles_ = 0;
+  std::size_t floor_steps_ = 0;     // time.dt_min
+  double largest_floor_cfl_ = 0.0;
   std::vector<Column> columns_;
   // Accumulated over the steps since the last sample (forces are interval means).
   double acc_dt_ = 0.0;

@@ -199,6 +199,28 @@ TEST(CaseReader, AdaptiveCeilingIsHeldToTheBodyForceBound) {
   expect_error(kMinimal, {"time.adaptive=true", "time.dt=0.01"}, "time.dt", "0.25 sqrt(h / g)");
 }
 
+// time.dt_min, the adaptive step's floor: only with the adaptive ISPH step, not above its ceiling,
+// and not above the fixed step's bound (here 0.4 dp / sqrt(g depth) = 2.55 ms), since where it binds
+// the step is a fixed one. Default 0 (no floor).
+TEST(CaseReader, AdaptiveStepFloorIsChecked) {
+  const CaseSpec plain = read_case_text(kMinimal, "case.toml");
+  EXPECT_DOUBLE_EQ(plain.time.dt_min, 0.0);
+  const CaseSpec floored = read_case_text(kMinimal, "case.toml", {"time.adaptive=true", "time.dt=0.009", "time.dt_min=0.0025"});
+  EXPECT_DOUBLE_EQ(floored.time.dt_min, 0.0025);
+  // In the resolved case only when set (the committed run records' case.toml are compared with it
+  // as text), and read back from it.
+  EXPECT_EQ(resolved_case_toml(plain).find("dt_min"), std::string::npos);
+  EXPECT_DOUBLE_EQ(read_case_text(resolved_case_toml(floored), "resolved.toml").time.dt_min, 0.0025);
+  expect_error(kMinimal, {"time.dt=0.002", "time.dt_min=0.001"}, "time.dt_min", "time.adaptive = true");
+  expect_error(kMinimal, {"scheme={type=\"wcsph\"}", "time.adaptive=true", "time.dt=0.002", "time.dt_min=0.001"},
+               "time.dt_min", "ISPH");
+  expect_error(kMinimal, {"time.adaptive=true", "time.dt=0.002", "time.dt_min=0.0021"}, "time.dt_min",
+               "above the step's ceiling");
+  expect_error(kMinimal, {"time.adaptive=true", "time.dt=0.009", "time.dt_min=0.003"}, "time.dt_min",
+               "bound of a fixed step");
+  expect_error(kMinimal, {"time.adaptive=true", "time.dt_min=-0.001"}, "time.dt_min", ">= 0");
+}
+
 TEST(CaseReader, ResolvedCaseReadsBackToTheSameSpec) {
   const CaseSpec a = read_case_text(default_case_text(), "default.toml");
   const CaseSpec b = read_case_text(resolved_case_toml(a), "resolved.toml");
