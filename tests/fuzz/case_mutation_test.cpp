@@ -235,7 +235,7 @@ void mutate_once(std::string& s, Rng& rng, const std::vector<std::string>& fragm
 
 const std::vector<std::string> kOverrideKeys = {
     "tank.shape", "tank.length", "tank.height", "tank.points", "tank.coefficient", "fill.depth", "particles.dp",
-    "particles.wall_layers", "time.end", "time.dt", "time.settle", "excitation.type", "excitation.beta",
+    "particles.wall_layers", "time.end", "time.dt", "time.settle", "time.dt_min", "excitation.type", "excitation.beta",
     "excitation.frequency", "excitation.amplitude", "scheme.type", "screens", "screens.0.x", "screens.0",
     "probes.gauge.0.x", "probes.gauge.99999999999999999999.x", "probes.gauge.0", "probes.pressure.1.y",
     "probes.pressure.0.size",

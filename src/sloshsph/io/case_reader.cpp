@@ -834,7 +834,7 @@ void check_step_floor(const CaseSpec& s, double fixed_bound, Fail&& fail) {
   }
   if (s.time.dt_min > fixed_bound) {
     m << s.time.dt_min << " s is above the bound of a fixed step, " << fixed_bound
-      << " s (0.4 dp / sqrt(g depth), with fill blocks 0.4 dp / sqrt(2 g head); 0.125 dp^2 / nu): where the "
+      << " s (0.4 dp / (sqrt(g depth) + X0 omega), with fill blocks sqrt(2 g head) for sqrt(g depth); 0.125 dp^2 / nu): where the "
          "floor binds, the step is a fixed one";
     fail("time.dt_min", m.str());
   }
@@ -908,7 +908,7 @@ void check_consistency(const CaseSpec& s, TableReader& root) {
     if (s.time.dt > dt_max) {
       std::ostringstream m;
       m << "time step " << s.time.dt << " s is above the stability bound " << dt_max
-        << " s (0.4 dp / sqrt(g depth), with fill blocks 0.4 dp / sqrt(2 g head); 0.125 dp^2 / nu)";
+        << " s (0.4 dp / (sqrt(g depth) + X0 omega), with fill blocks sqrt(2 g head) for sqrt(g depth); 0.125 dp^2 / nu)";
       fail("time.dt", m.str());
     }
   }

@@ -413,16 +413,16 @@ double BasicSimulation<D>::adaptive_bound() const {
 }
 
 template <int D>
-bool BasicSimulation<D>::step_at_floor() const {
-  return spec_.time.adaptive && spec_.time.dt_min > 0.0 && adaptive_bound() < spec_.time.dt_min;
-}
-
-template <int D>
-double BasicSimulation<D>::next_dt() const {
+double BasicSimulation<D>::next_dt(bool* floored) const {
   double dt = spec_.time.dt;
-  // The adaptive step between its floor time.dt_min (0: none; a spray droplet's speed would
-  // otherwise set the step of the whole tank) and its ceiling time.dt.
-  if (spec_.time.adaptive) dt = std::min(dt, std::max(adaptive_bound(), spec_.time.dt_min));
+  if (floored) *floored = false;
+  if (spec_.time.adaptive) {
+    // Between the floor time.dt_min (0: none; a spray droplet's speed would otherwise set the step
+    // of the whole tank) and the ceiling time.dt.
+    const double bound = adaptive_bound();
+    dt = std::min(dt, std::max(bound, spec_.time.dt_min));
+    if (floored) *floored = bound < spec_.time.dt_min && spec_.time.dt_min < spec_.time.end - time_;
+  }
   // An explicit (weakly compressible) scheme takes its own CFL step; time.dt caps it.
   if (const auto stable = scheme_.stable_dt(scene_.particles, frame_of(tank_motion())))
     dt = std::min(dt, *stable);
@@ -431,9 +431,9 @@ double BasicSimulation<D>::next_dt() const {
 
 template <int D>
 void BasicSimulation<D>::step() {
-  const double dt = next_dt();
+  bool at_floor = false;  // the step is time.dt_min because the adaptive bound fell below it
+  const double dt = next_dt(&at_floor);
   if (!(dt > 0.0)) return;
-  const bool at_floor = step_at_floor();
   const double speed_at_start = max_speed_;
   const BaseMotion before = tank_motion();
   // Body force at the middle of the step: second-order in time for the imposed motion.

@@ -151,9 +151,8 @@ class BasicSimulation {
   double probe_pressure(std::size_t probe) const;  // current pressure at probe k
 
  private:
-  double next_dt() const;
+  double next_dt(bool* floored = nullptr) const;  // *floored: the step is time.dt_min, raised to it
   double adaptive_bound() const;  // s, the adaptive step's bound before its ceiling and floor
-  bool step_at_floor() const;     // the next step takes time.dt_min
   void settle();
   void check_state() const;                         // at the current time and step
   void check_state(const std::string& when) const;  // RunFailure naming `when` otherwise
