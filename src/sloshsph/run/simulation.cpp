@@ -434,7 +434,6 @@ void BasicSimulation<D>::step() {
   bool at_floor = false;  // the step is time.dt_min because the adaptive bound fell below it
   const double dt = next_dt(&at_floor);
   if (!(dt > 0.0)) return;
-  const double speed_at_start = max_speed_;
   const BaseMotion before = tank_motion();
   // Body force at the middle of the step: second-order in time for the imposed motion.
   BaseMotion mid = ground_motion(time_ + 0.5 * dt);
@@ -516,14 +515,14 @@ void BasicSimulation<D>::step() {
   const bool fixed = !spec_.time.adaptive && spec_.scheme.type == "isph";
   time_ = fixed ? std::min(steps_ * spec_.time.dt, spec_.time.end) : time_ + dt;
   last_dt_ = dt;
+  if (at_floor) {  // max_speed_ is still the speed the step was chosen from
+    ++floor_steps_;
+    largest_floor_cfl_ = std::max(largest_floor_cfl_, max_speed_ * dt / spec_.particles.dp);
+  }
   max_speed_ = scheme_.diagnostics().max_speed;
   if (const std::size_t pinned = scheme_.diagnostics().pinned_particles; pinned > 0) {
     ++pinned_steps_;
     pinned_particles_ += pinned;
-  }
-  if (at_floor) {
-    ++floor_steps_;
-    largest_floor_cfl_ = std::max(largest_floor_cfl_, speed_at_start * dt / spec_.particles.dp);
   }
   check_state();
   remove_leaked();
