@@ -26,6 +26,18 @@ struct CylinderTank {
   double signed_distance(Vec3 p) const { return std::min(radius - from_axis(p), p.z); }
 };
 
+// The tank an upright cylinder stands in, as the section of a box in the plane (x, z): the rectangle
+// 2R x height (the case reader sets its length and breadth to 2R). Any other tank is its own section.
+// The scene builds the cylinder's section on it, and the case reader checks fill blocks against it.
+inline TankSpec plane_section(const TankSpec& spec) {
+  TankSpec section = spec;
+  if (section.shape == "cylinder") section.shape = "rectangle";
+  return section;
+}
+
+// The cylinder of a case's tank (shape "cylinder").
+inline CylinderTank cylinder_of(const TankSpec& spec) { return {spec.radius, spec.height}; }
+
 // The signed distance (positive inside) of a case's tank in D dimensions: in 2D its section
 // (TankGeometry::signed_distance); in 3D the upright cylinder's, or the section extruded over the
 // breadth (container_signed_distance). For what marks wall particles by their depth in the wall
@@ -35,7 +47,7 @@ std::function<double(Vec<D>)> tank_signed_distance(const TankSpec& spec, const s
   if constexpr (D == 2) {
     return [tank = make_tank(spec, where)](Vec2 p) { return tank.signed_distance(p); };
   } else if (spec.shape == "cylinder") {
-    return [tank = CylinderTank{spec.radius, spec.height}](Vec3 p) { return tank.signed_distance(p); };
+    return [tank = cylinder_of(spec)](Vec3 p) { return tank.signed_distance(p); };
   } else {
     return [tank = PrismTank{make_tank(spec, where), spec.breadth}](Vec3 p) { return tank.signed_distance(p); };
   }

@@ -312,10 +312,8 @@ void start_blocks_at_rest(const CaseSpec& spec, Particles3& p) {
 // scene's section is the rectangle 2R x height it stands in. Porous screens (vertical planes) are
 // extruded over the chord their plane cuts by the driver; explicit slats stand on it (place_screens).
 Scene3 build_cylinder_scene(const CaseSpec& spec) {
-  const CylinderTank cylinder{spec.tank.radius, spec.tank.height};
-  TankSpec box = spec.tank;
-  box.shape = "rectangle";
-  auto tank = std::make_shared<TankGeometry>(make_tank(box, spec.where("tank.radius")));
+  const CylinderTank cylinder = cylinder_of(spec.tank);
+  auto tank = std::make_shared<TankGeometry>(make_tank(plane_section(spec.tank), spec.where("tank.radius")));
   check_probes_3d(spec, [&cylinder](Vec3 p) { return cylinder.signed_distance(p); }, tank->y_top);
   const double dp = spec.particles.dp;
   const std::vector<FluidBlock>& blocks = spec.fill.blocks;  // each over the chords of the circle

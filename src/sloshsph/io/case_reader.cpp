@@ -774,9 +774,7 @@ void resolve_fill(CaseSpec& s) {
   // A cylinder's blocks are checked against the rectangle 2R x height it stands in (its section
   // in the plane (x, z)), and hold the lattice nodes inside the circle (geometry/cylinder_tank.hpp).
   const bool cylinder = s.tank.shape == "cylinder";
-  TankSpec section = s.tank;
-  if (cylinder) section.shape = "rectangle";
-  const TankGeometry tank = make_tank(section, s.where("tank.shape"));
+  const TankGeometry tank = make_tank(plane_section(s.tank), s.where("tank.shape"));
   const double dp = s.particles.dp;
   const double top = std::min(tank.wall.front().y, tank.wall.back().y);
   for (std::size_t k = 0; k < f.blocks.size(); ++k) {
@@ -796,7 +794,7 @@ void resolve_fill(CaseSpec& s) {
     if (b.to.y >= top)
       fail("to", "the block " + box.str() + " reaches the top of the walls (y = " + std::to_string(top) + " m)");
   }
-  const CylinderTank circle{s.tank.radius, s.tank.height};
+  const CylinderTank circle = cylinder_of(s.tank);
   const std::size_t count = cylinder ? fill_blocks(circle, dp, f.blocks).size() : fill_blocks(tank, dp, f.blocks).size();
   if (count == 0) throw InputError(s.where("fill.blocks"), "fill.blocks", "no fluid particle fits in the blocks");
   f.block_head = 0.0;
