@@ -2,9 +2,10 @@
 // band-limited white-noise wind force (cases/building_<tank>_<level>mg.toml), against thesis
 // Table 4.3 (effective damping of the structure-TLD system) and Table 4.4 (peak structural
 // acceleration). Label `long`: one test per level, each four one-hour runs in sequence at the cases'
-// dp = 0.1 m: at 10 milli-g (h = 1.8 dp, the midpoint predictor and the adaptive step under 15 ms,
-// since 2026-12-07) about 35-60 min a run on one thread, at 44 milli-g (h = 1.4 dp, a fixed 5 ms) 1.5-2.5 h
-// (ctest -j 2 runs the two levels side by side). Beside them, one test per run (BuildingRun, at the end of this file), so that a machine
+// dp = 0.1 m, h = 1.8 dp and the midpoint predictor (since 2026-12-07): at 10 milli-g (the adaptive
+// step under 15 ms) about 35-60 min a run on one thread; at 44 milli-g 1.4-1.8 h a run on two threads
+// for FR and SF (a fixed 5 ms: the adaptive step follows their spray) and 1.7-2.2 h on one thread for
+// PF and TLD (adaptive) (ctest -j 2 runs the two levels side by side). Beside them, one test per run (BuildingRun, at the end of this file), so that a machine
 // with more cores makes the eight runs at once and the two level tests then only compare.
 //
 // The bar: every run completes with no particle lost; the effective damping and the peak
