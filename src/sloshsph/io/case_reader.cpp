@@ -698,7 +698,7 @@ void check_plan_screen(const CaseSpec& s, const ScreenSpec& sc, const std::strin
   const double tol = 1e-9;
   for (const auto& [sub, q] : {std::pair<const char*, Vec2>{"plan_from", sc.plan->first}, {"plan_to", sc.plan->second}}) {
     const bool inside = s.tank.shape == "cylinder"
-                            ? std::hypot(q.x - s.tank.radius, q.y - s.tank.radius) <= s.tank.radius + tol
+                            ? cylinder_of(s.tank).from_axis({q.x, q.y, 0.0}) <= s.tank.radius + tol
                             : q.x >= -tol && q.x <= s.tank.length + tol && q.y >= -tol && q.y <= s.tank.breadth + tol;
     if (!inside) fail(sub, "the end of the screen must lie inside the tank's plan (on its wall at most)");
   }

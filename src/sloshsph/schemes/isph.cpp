@@ -124,8 +124,8 @@ void BasicIsphScheme<D>::mark_repulsive_layer(const ParticleSet& p) {
   repulsion_strength_.assign(p.n_wall(), 0.0);
   if (!scheme_.repulsive_walls) return;
   const std::function<double(Vec<D>)> distance = tank_signed_distance<D>(tank_, tank_where_);
-  // The bottom of a cylinder is z = 0 (it has no section to ask).
-  const double bottom = tank_.shape == "cylinder" ? 0.0 : make_tank(tank_, tank_where_).y_bottom;
+  // A cylinder's bottom is that of the section it stands in (plane_section: a rectangle, bottom 0).
+  const double bottom = make_tank(plane_section(tank_), tank_where_).y_bottom;
   const double level = bottom + still_depth_;
   for (std::size_t w = p.n_fluid; w < p.size(); ++w) {
     const double d = distance(p.position[w]);
